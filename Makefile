@@ -1,0 +1,40 @@
+# ydry: set-up, build, run, test. Everything below wraps CMake; `make run` and `make test`
+# are the two commands a newcomer needs (README).
+BUILD    ?= build
+JOBS     ?= $(shell nproc)
+DECK     ?= inputs/demo/drying_layer.toml
+OUTDIR   ?= runs/$(basename $(notdir $(DECK)))
+PYTHON   ?= /usr/bin/python3
+# Test time on CI: ctest runs its cases on every core.
+CTEST_FLAGS ?= --output-on-failure -j $(JOBS)
+
+.PHONY: all deps configure build run test verify bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	$(BUILD)/ydry $(DECK) -o $(OUTDIR)
+	@echo "Outputs in $(OUTDIR)/ (open $(OUTDIR)/*.pvd in ParaView)"
+
+test: build
+	cd $(BUILD) && ctest $(CTEST_FLAGS)
+
+verify: build
+	$(PYTHON) verification/run_all.py --ydry $(BUILD)/ydry
+
+bench: build
+	$(BUILD)/bench/bench_moisture
+
+clean:
+	rm -rf $(BUILD)

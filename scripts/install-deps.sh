@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages ydry needs (DESIGN section 7). Idempotent: installs only
+# what is missing, and runs `apt-get update` first when anything is.
+#   scripts/install-deps.sh                  build, test and plotting dependencies
+#   scripts/install-deps.sh --with-paraview  also paraview + xvfb for the ParaView client tests
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libmetis-dev libvtk9-dev catch2 libtomlplusplus-dev libcli11-dev
+  gmsh
+  python3 python3-numpy python3-matplotlib python3-vtk9
+)
+for arg in "$@"; do
+  case "$arg" in
+    --with-paraview) packages+=(paraview xvfb) ;;
+    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

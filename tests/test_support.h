@@ -1,0 +1,35 @@
+// Helpers shared by the unit tests: temporary folders, decks written from text, running the
+// ydry executable.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ycore/deck.h"
+
+namespace ydry_test {
+
+// A fresh folder under the system temp directory, removed when the object goes.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir();
+  ~TempDir();
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+// Writes `text` to `path`.
+void write_text(const std::string& path, const std::string& text);
+std::string read_text(const std::string& path);
+
+// The strip of paper section 4.1 (verification/strip1d/strip1d.toml) with overrides.
+ydry::Deck strip_deck(const std::vector<std::string>& overrides = {});
+
+struct CommandResult {
+  int exit_code;
+  std::string output;  // stdout and stderr together
+};
+// Runs the built ydry with `arguments` (already shell-quoted).
+CommandResult run_ydry(const std::string& arguments);
+
+}  // namespace ydry_test

@@ -1,0 +1,41 @@
+// ydry: 2D FDEM moisture diffusion - shrinkage - fracture for soil desiccation cracking.
+//   ydry DECK.toml [-o OUTDIR] [--set key.path=value ...] [--threads N] [--force] [--quiet]
+// Exit codes: 0 done, 2 bad input, 3 numerical failure, 130 interrupted.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "version.h"
+#include "ycore/input_error.h"
+#include "ycore/run.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ydry: 2D FDEM simulation of soil desiccation cracking (moisture diffusion, "
+               "shrinkage, cohesive fracture)"};
+  ydry::RunOptions opt;
+  app.add_option("deck", opt.deck_path, "input deck (TOML)")->required();
+  app.add_option("-o,--output", opt.outdir, "output folder (default runs/NAME)");
+  app.add_option("--set", opt.overrides, "override a deck value: key.path=value (repeatable)");
+  app.add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  app.add_flag("--force", opt.force, "write into a non-empty output folder that is not an earlier run's");
+  app.add_flag("-q,--quiet", opt.quiet, "no progress or log lines on stderr (warnings and errors still)");
+  app.add_option("--progress-every", opt.progress_every_s,
+                 "seconds between progress lines when stderr is not a terminal")
+      ->check(CLI::PositiveNumber);
+  app.set_version_flag("--version", std::string("ydry ") + YDRY_VERSION + " (" + YDRY_COMMIT + ")");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return ydry::run(opt);
+  } catch (const ydry::InputError& e) {
+    std::cerr << "ydry: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ydry: failed: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,40 @@
+// The mesh as it comes from a generator or a file, before it is exploded into the FDEM state:
+// shared vertices, triangles tagged with a material, and named boundary edges.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ydry {
+
+using index_t = std::uint32_t;  // all mesh indices are 32-bit
+
+struct MeshInput {
+  std::vector<double> vx, vy;               // vertex coordinates, m            [vertices]
+  std::vector<index_t> tri;                 // 3 vertex ids per triangle, CCW   [3 * triangles]
+  std::vector<std::string> tri_material;    // material name per triangle       [triangles]
+  // Named boundaries (rectangle sides, Gmsh physical curves): vertex pairs of mesh edges.
+  std::map<std::string, std::vector<index_t>> boundaries;  // name -> 2 vertex ids per edge
+
+  std::size_t vertex_count() const { return vx.size(); }
+  std::size_t triangle_count() const { return tri_material.size(); }
+};
+
+// Built-in structured rectangle [0, lx] x [0, ly] of square-ish cells of about element_size;
+// pattern "right" (diagonal /), "left" (diagonal \) or "cross" (4 triangles per cell around
+// a centre vertex). Sides are named "left", "right", "bottom", "top".
+MeshInput generate_rectangle(double lx, double ly, double element_size,
+                             const std::string& pattern, const std::string& material);
+
+// Gmsh 4.1 ASCII reader: 3-node triangles in physical surfaces (the surface's name is the
+// material), 2-node lines in physical curves (each curve name is a boundary). Throws
+// InputError naming the file and line on anything it cannot represent.
+MeshInput read_gmsh(const std::string& path);
+
+// Makes every triangle counter-clockwise (swaps two corners of clockwise ones) and rejects
+// degenerate triangles; run on every MeshInput before use.
+void orient_counter_clockwise(MeshInput& mesh);
+
+}  // namespace ydry

@@ -1,0 +1,48 @@
+// The run's output folder and its plain files: series.csv, summary.json, deck.toml, log.txt.
+// Every file but the log is written to a temporary name and renamed, so a crash never
+// leaves a truncated file behind.
+#pragma once
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ydry {
+
+// Writes `content` to `path` through `path`.tmp and a rename.
+void write_file_atomically(const std::string& path, const std::string& content);
+
+// Makes OUTDIR ready: creates it, or accepts it when empty or holding an earlier ydry run
+// (whose outputs are then removed); refuses anything else unless `force`. InputError.
+void prepare_output_dir(const std::string& outdir, bool force);
+
+// The columns of series.csv, in order (DESIGN section 5); summary.json repeats the last row.
+extern const std::vector<std::string> kSeriesColumns;
+
+struct Series {
+  std::vector<std::vector<double>> rows;  // one per output time, kSeriesColumns order
+};
+void write_series_csv(const std::string& path, const Series& series);
+
+// A flat JSON object: numbers (NaN as null), strings and booleans, in insertion order.
+struct JsonObject {
+  std::vector<std::pair<std::string, std::string>> fields;  // key -> encoded JSON value
+  void number(const std::string& key, double v);
+  void integer(const std::string& key, long long v);
+  void text(const std::string& key, const std::string& v);
+  void boolean(const std::string& key, bool v);
+  std::string dump() const;
+};
+
+// log.txt and stderr. Messages go to both (stderr unless quiet); warnings always reach stderr.
+struct Log {
+  std::ofstream file;
+  bool quiet = false;
+  bool stderr_is_terminal = false;
+  void open(const std::string& path, bool quiet_console);
+  void info(const std::string& message);
+  void warning(const std::string& message);
+};
+
+}  // namespace ydry

@@ -1,0 +1,33 @@
+// The coupling driver: the paper's staggered loop (section 3.3) and the run's outputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ycore/deck.h"
+#include "ycore/state.h"
+
+namespace ydry {
+
+struct RunOptions {
+  std::string deck_path;
+  std::string outdir;                  // empty: runs/NAME
+  std::vector<std::string> overrides;  // --set key.path=value
+  int threads = 0;                     // 0: OpenMP's default
+  bool force = false;
+  bool quiet = false;
+  double progress_every_s = 10.0;      // plain progress lines when stderr is not a terminal
+};
+
+// Everything a run needs before its first step: mesh, exploded state, moisture nodes and
+// the moisture model. Throws InputError for anything the deck asks that cannot be done.
+State setup_state(const Deck& deck);
+
+// Advances the state to until_s in explicit moisture steps no longer than max_step_s,
+// landing exactly on until_s.
+void advance_to(State& state, double until_s, double max_step_s);
+
+// Runs a deck end to end with outputs; returns the process exit code.
+int run(const RunOptions& options);
+
+}  // namespace ydry

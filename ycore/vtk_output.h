@@ -1,0 +1,22 @@
+// ParaView output: one compressed .vtu per frame through VTK's XML writer, and a .pvd that
+// lists the frames with their times (DESIGN section 5).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ycore/state.h"
+
+namespace ydry {
+
+struct FrameSeries {
+  std::string outdir, name;
+  std::vector<double> times;        // s, one per frame written
+  std::vector<std::string> files;   // relative to outdir
+};
+
+// Writes frames/NAME_NNNNNN.vtu (the deformed bulk mesh: point data moisture,
+// displacement, velocity; cell data material, moisture) and rewrites NAME.pvd.
+void write_frame(FrameSeries& series, const State& state, double time_s);
+
+}  // namespace ydry

@@ -1,0 +1,62 @@
+#include "ycrack/node_sharing.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace ydry {
+namespace {
+
+index_t find_root(std::vector<index_t>& parent, index_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];  // path halving
+    i = parent[i];
+  }
+  return i;
+}
+
+void unite(std::vector<index_t>& parent, index_t a, index_t b) {
+  a = find_root(parent, a);
+  b = find_root(parent, b);
+  if (a != b) parent[std::max(a, b)] = std::min(a, b);
+}
+
+}  // namespace
+
+index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_t>& has_moisture,
+                             Nodes& nodes, MoistureNodes& moisture) {
+  const index_t ncorners = static_cast<index_t>(nodes.size());
+  std::vector<index_t> parent(ncorners);
+  std::iota(parent.begin(), parent.end(), index_t(0));
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (joints.broken[j]) continue;
+    const index_t* n = &joints.node[4 * j];
+    unite(parent, n[0], n[3]);
+    unite(parent, n[1], n[2]);
+  }
+
+  index_t count = 0;
+  std::vector<index_t> root_id(ncorners, kNoIndex);
+  for (index_t c = 0; c < ncorners; ++c) {
+    if (!has_moisture[triangle_of(c)]) {
+      nodes.mnode[c] = kNoIndex;
+      continue;
+    }
+    const index_t r = find_root(parent, c);
+    if (root_id[r] == kNoIndex) root_id[r] = count++;
+    nodes.mnode[c] = root_id[r];
+  }
+
+  // CSR corner lists, each in increasing corner order (a counting sort).
+  moisture.corner_offset.assign(std::size_t(count) + 1, 0);
+  for (index_t c = 0; c < ncorners; ++c)
+    if (nodes.mnode[c] != kNoIndex) ++moisture.corner_offset[nodes.mnode[c] + 1];
+  std::partial_sum(moisture.corner_offset.begin(), moisture.corner_offset.end(),
+                   moisture.corner_offset.begin());
+  moisture.corner.resize(moisture.corner_offset.back());
+  std::vector<index_t> fill(moisture.corner_offset.begin(), moisture.corner_offset.end() - 1);
+  for (index_t c = 0; c < ncorners; ++c)
+    if (nodes.mnode[c] != kNoIndex) moisture.corner[fill[nodes.mnode[c]]++] = c;
+  return count;
+}
+
+}  // namespace ydry

@@ -1,0 +1,116 @@
+// Moisture model set-up: values, conductances and boundary terms on the grouped topology.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "ycore/build_state.h"
+#include "ycore/input_error.h"
+#include "ymoist/moisture.h"
+
+namespace ydry {
+namespace {
+
+// K_ab = k t A grad N_a . grad N_b for a linear triangle (Eqs. 2-4 in matrix form).
+void triangle_conductance(const double* x, const double* y, double k_times_t, double* K) {
+  const double twice_area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+  double gx[3], gy[3];  // grad N_a scaled by 2A
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    gx[a] = y[b] - y[c];
+    gy[a] = x[c] - x[b];
+  }
+  const double scale = k_times_t / (2.0 * twice_area);  // k t A / (2A)^2
+  int i = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b) K[i++] = scale * (gx[a] * gx[b] + gy[a] * gy[b]);
+}
+
+struct Term {
+  index_t mnode;
+  MoistureTermKind kind;
+  double area, rate, level;
+};
+
+void add_boundary_terms(State& s, const Deck& deck) {
+  MoistureNodes& m = s.moisture;
+  const index_t nm = static_cast<index_t>(m.size());
+  std::vector<Term> terms;
+  m.fixed_w.assign(nm, std::numeric_limits<double>::quiet_NaN());
+  for (const MoistureBoundaryDeck& bc : deck.moisture_boundaries) {
+    const std::vector<index_t>& pairs = boundary_nodes(s, bc.on, bc.where);
+    bool touches_moisture = false;
+    for (std::size_t k = 0; k < pairs.size(); k += 2) {
+      const index_t a = pairs[k], b = pairs[k + 1];
+      const double half_area = 0.5 * deck.thickness_m *
+                               std::hypot(s.nodes.x0[b] - s.nodes.x0[a], s.nodes.y0[b] - s.nodes.y0[a]);
+      for (const index_t node : {a, b}) {
+        const index_t mn = s.nodes.mnode[node];
+        if (mn == kNoIndex) continue;
+        touches_moisture = true;
+        switch (bc.type) {
+          case MoistureBcType::fixed: m.fixed_w[mn] = bc.value; break;
+          case MoistureBcType::flux:
+            terms.push_back({mn, MoistureTermKind::flux, half_area, bc.rate_kg_m2_s,
+                             bc.has_residual ? bc.residual : -std::numeric_limits<double>::infinity()});
+            break;
+          case MoistureBcType::exchange:
+            terms.push_back({mn, MoistureTermKind::exchange, half_area, bc.coefficient, bc.air_moisture});
+            break;
+        }
+      }
+    }
+    if (!touches_moisture)
+      throw InputError(bc.where + ": boundary \"" + bc.on + "\" touches no material with moisture_conductivity");
+  }
+
+  // CSR by moisture node; stable, so each node's terms keep deck order.
+  std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.mnode < b.mnode; });
+  m.term_offset.assign(std::size_t(nm) + 1, 0);
+  for (const Term& t : terms) ++m.term_offset[t.mnode + 1];
+  std::partial_sum(m.term_offset.begin(), m.term_offset.end(), m.term_offset.begin());
+  m.term_kind.clear(), m.term_area.clear(), m.term_rate.clear(), m.term_level.clear();
+  for (const Term& t : terms) {
+    m.term_kind.push_back(t.kind);
+    m.term_area.push_back(t.area);
+    m.term_rate.push_back(t.rate);
+    m.term_level.push_back(t.level);
+  }
+  m.boundary_node.clear();
+  for (index_t i = 0; i < nm; ++i)
+    if (m.term_offset[i + 1] > m.term_offset[i] || !std::isnan(m.fixed_w[i])) m.boundary_node.push_back(i);
+  m.boundary_inflow.assign(nm, 0.0);
+}
+
+}  // namespace
+
+void init_moisture(State& s, const Deck& deck) {
+  MoistureNodes& m = s.moisture;
+  const index_t nm = static_cast<index_t>(m.corner_offset.size() - 1);
+  const index_t nt = static_cast<index_t>(s.triangles.size());
+  m.w.assign(nm, 0.0);
+  m.dry_mass.assign(nm, 0.0);
+  s.moisture_elements.conductance.assign(6 * std::size_t(nt), 0.0);
+  s.moisture_elements.corner_inflow.assign(3 * std::size_t(nt), 0.0);
+  for (index_t t = 0; t < nt; ++t) {
+    const MaterialDeck& mat = deck.materials.at(s.material_names[s.triangles.material[t]]);
+    if (!mat.has_moisture()) continue;
+    const index_t c0 = corner_node(t, 0);
+    triangle_conductance(&s.nodes.x0[c0], &s.nodes.y0[c0], *mat.moisture_conductivity * deck.thickness_m,
+                         &s.moisture_elements.conductance[6 * std::size_t(t)]);
+    // Dry mass: density x a third of each triangle's area x thickness; all corners of one
+    // moisture node belong to one material, so w_0 is that material's.
+    for (int a = 0; a < 3; ++a) {
+      const index_t mn = s.nodes.mnode[c0 + a];
+      m.dry_mass[mn] += *mat.density * s.triangles.area0[t] / 3.0 * deck.thickness_m;
+      m.w[mn] = *mat.initial_moisture;
+    }
+  }
+  add_boundary_terms(s, deck);
+  for (index_t i = 0; i < nm; ++i)
+    if (!std::isnan(m.fixed_w[i])) m.w[i] = m.fixed_w[i];
+  s.water = WaterBalance{};
+  s.water.initial_kg = total_water_kg(s);
+}
+
+}  // namespace ydry
