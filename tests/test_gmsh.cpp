@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "tests/test_support.h"
 #include "ycore/input_error.h"
 #include "ycore/mesh_input.h"
 
@@ -20,27 +21,10 @@ namespace {
 
 const std::string data_dir = std::string(YDRY_SOURCE_DIR) + "/tests/data/";
 
-// A folder of this process's own under the temp directory (parallel runs do not collide),
-// removed at exit.
-struct TempDir {
-  std::filesystem::path path = std::filesystem::temp_directory_path() /
-                               ("ydry_test_gmsh_" + std::to_string(std::random_device{}()));
-  TempDir() { std::filesystem::create_directories(path); }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
-
-const std::filesystem::path& temp_dir() {
-  static const TempDir dir;
-  return dir.path;
-}
-
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto path = (temp_dir() / name).string();
-  std::ofstream(path) << text;
-  return path;
+  static const ydry_test::TempDir dir;
+  ydry_test::write_text(dir.file(name), text);
+  return dir.file(name);
 }
 
 // The message of the InputError read_gmsh throws for `path`; fails the test if none.
@@ -223,7 +207,7 @@ TEST_CASE("gmsh: errors name the file and line", "[gmsh]") {
     CHECK_THAT(message, Catch::Contains("partitioned"));
   }
   SECTION("missing file") {
-    const auto path = (temp_dir() / "no_such_mesh.msh").string();
+    const auto path = write_temp("placeholder", "") + ".missing";
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ": mesh.file: "));
     CHECK_THAT(message, Catch::Contains("cannot open"));

@@ -41,17 +41,26 @@ const Range kPositive{0, kInf, true, false};
 const Range kNonNegative{0, kInf, false, false};
 const Range kUnit{0, 1, false, false};  // a mass fraction, a safety factor
 
-// Where a node came from: "FILE:LINE" for the deck, the override text for --set.
-std::string source_of(const toml::node* node, const std::string& fallback_file) {
-  if (node == nullptr || !node->source().path) return fallback_file;
-  const std::string& path = *node->source().path;
-  if (path.rfind("--set", 0) == 0) return path;
-  return path + ":" + std::to_string(node->source().begin.line);
+// Where the deck's nodes came from: the file, and the --set overrides that placed nodes
+// (toml++ keeps no source for a node inserted by the program, so they are remembered here).
+struct Origin {
+  std::string file;
+  std::map<const toml::node*, std::string> overrides;  // node -> "--set key=value"
+};
+
+// "FILE:LINE" for a node of the deck, the override text for one placed by --set.
+std::string source_of(const toml::node* node, const Origin& origin) {
+  if (node != nullptr) {
+    const auto it = origin.overrides.find(node);
+    if (it != origin.overrides.end()) return it->second;
+    if (node->source().path) return *node->source().path + ":" + std::to_string(node->source().begin.line);
+  }
+  return origin.file;
 }
 
-[[noreturn]] void fail(const toml::node* node, const std::string& file, const std::string& key,
+[[noreturn]] void fail(const toml::node* node, const Origin& origin, const std::string& key,
                        const std::string& message) {
-  throw InputError(source_of(node, file) + ": " + key + ": " + message);
+  throw InputError(source_of(node, origin) + ": " + key + ": " + message);
 }
 
 const char* type_name(const toml::node& n) {
@@ -66,8 +75,8 @@ const char* type_name(const toml::node& n) {
 
 class TableReader {
  public:
-  TableReader(toml::table& table, std::string prefix, std::string file)
-      : table_(table), prefix_(std::move(prefix)), file_(std::move(file)) {}
+  TableReader(toml::table& table, std::string prefix, const Origin& origin)
+      : table_(table), prefix_(std::move(prefix)), file_(origin) {}
 
   std::string key_path(const std::string& key) const {
     return prefix_.empty() ? key : prefix_ + "." + key;
@@ -218,7 +227,7 @@ class TableReader {
 
   toml::table& table_;
   std::string prefix_;
-  std::string file_;
+  const Origin& file_;
   std::set<std::string> read_;
 };
 
@@ -267,7 +276,7 @@ toml::node_view<toml::node> parse_override_value(toml::table& holder, const std:
   return holder["value"];
 }
 
-void apply_override(toml::table& root, const std::string& override_text) {
+void apply_override(toml::table& root, const std::string& override_text, Origin& origin) {
   const std::string where = "--set " + override_text;
   const auto eq = override_text.find('=');
   if (eq == std::string::npos) throw InputError(where + ": expected key.path=value");
@@ -289,13 +298,13 @@ void apply_override(toml::table& root, const std::string& override_text) {
       next = arr.get(static_cast<std::size_t>(seg.index));
     } else if (!next) {
       next = &table->insert(seg.key, toml::table{}).first->second;
+      origin.overrides[next] = where;
     }
     if (!next->is_table()) throw InputError(where + ": " + seg.key + " is not a table");
     table = next->as_table();
   }
   if (path.back().index >= 0) throw InputError(where + ": the last key cannot be indexed");
-  toml::node& placed = table->insert_or_assign(path.back().key, *value.node()).first->second;
-  (void)placed;
+  origin.overrides[&table->insert_or_assign(path.back().key, *value.node()).first->second] = where;
 }
 
 // --- sections --------------------------------------------------------------------------------
@@ -394,7 +403,7 @@ MoistureBoundaryDeck read_moisture_boundary(TableReader r) {
   return b;
 }
 
-void read_moisture(TableReader r, Deck& d, const std::string& file) {
+void read_moisture(TableReader r, Deck& d, const Origin& file) {
   if (toml::array* arr = r.table_array("boundary")) {
     for (std::size_t i = 0; i < arr->size(); ++i)
       d.moisture_boundaries.push_back(read_moisture_boundary(
@@ -407,7 +416,7 @@ void read_moisture(TableReader r, Deck& d, const std::string& file) {
   r.finish();
 }
 
-void read_mechanics(TableReader r, Deck& d, const std::string& file) {
+void read_mechanics(TableReader r, Deck& d, const Origin& file) {
   if (toml::array* arr = r.table_array("boundary")) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       TableReader b(*arr->get(i)->as_table(), "mechanics.boundary[" + std::to_string(i) + "]", file);
@@ -422,7 +431,7 @@ void read_mechanics(TableReader r, Deck& d, const std::string& file) {
   r.finish();
 }
 
-void read_cracks(toml::array& arr, Deck& d, const std::string& file) {
+void read_cracks(toml::array& arr, Deck& d, const Origin& file) {
   for (std::size_t i = 0; i < arr.size(); ++i) {
     TableReader c(*arr.get(i)->as_table(), "cracks[" + std::to_string(i) + "]", file);
     CrackSegmentDeck seg;
@@ -445,7 +454,7 @@ std::pair<std::string, std::string> material_pair(const std::string& key, const 
   r.error(key, "not of the form MATERIAL_MATERIAL with two materials of the deck");
 }
 
-void read_contact(TableReader r, Deck& d, const std::string& file) {
+void read_contact(TableReader r, Deck& d, const Origin& file) {
   d.contact_penalty_pa = r.optional_number("penalty", kPositive);
   TableReader friction(r.subtable("friction"), "contact.friction", file);
   for (const std::string& key : friction.keys())
@@ -466,31 +475,32 @@ Deck load_deck(const std::string& path, const std::vector<std::string>& override
   d.path = path;
   if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": deck file not found");
   toml::table& root = d.resolved;
+  Origin origin{path, {}};
   try {
     root = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " +
                      std::string(e.description()));
   }
-  for (const std::string& o : overrides) apply_override(root, o);
+  for (const std::string& o : overrides) apply_override(root, o, origin);
 
-  TableReader top(root, "", path);
-  read_run(TableReader(top.subtable("run"), "run", path), d);
-  read_mesh(TableReader(top.subtable("mesh"), "mesh", path), d);
-  TableReader materials(top.subtable("materials"), "materials", path);
+  TableReader top(root, "", origin);
+  read_run(TableReader(top.subtable("run"), "run", origin), d);
+  read_mesh(TableReader(top.subtable("mesh"), "mesh", origin), d);
+  TableReader materials(top.subtable("materials"), "materials", origin);
   for (const std::string& name : materials.keys())
-    d.materials[name] = read_material(TableReader(materials.subtable(name), "materials." + name, path), name);
+    d.materials[name] = read_material(TableReader(materials.subtable(name), "materials." + name, origin), name);
   if (d.materials.empty()) materials.missing("<name>");
   materials.finish();
-  read_moisture(TableReader(top.subtable("moisture"), "moisture", path), d, path);
-  if (toml::array* cracks = top.table_array("cracks")) read_cracks(*cracks, d, path);
-  read_mechanics(TableReader(top.subtable("mechanics"), "mechanics", path), d, path);
-  read_contact(TableReader(top.subtable("contact"), "contact", path), d, path);
-  read_solver(TableReader(top.subtable("solver"), "solver", path), d);
+  read_moisture(TableReader(top.subtable("moisture"), "moisture", origin), d, origin);
+  if (toml::array* cracks = top.table_array("cracks")) read_cracks(*cracks, d, origin);
+  read_mechanics(TableReader(top.subtable("mechanics"), "mechanics", origin), d, origin);
+  read_contact(TableReader(top.subtable("contact"), "contact", origin), d, origin);
+  read_solver(TableReader(top.subtable("solver"), "solver", origin), d);
   top.finish();
 
   if (d.output_interval_s > d.end_time_s)
-    TableReader(*root["run"].as_table(), "run", path).error("output_interval", "is longer than run.end_time");
+    TableReader(*root["run"].as_table(), "run", origin).error("output_interval", "is longer than run.end_time");
   return d;
 }
 

@@ -1,0 +1,124 @@
+// Deck errors: every class exits 2 from the real executable and names the file, line and
+// key. Also --set overrides, the resolved deck, and the output-folder guard.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "tests/test_support.h"
+
+using ydry_test::run_ydry;
+
+namespace {
+
+const char* const kGoodDeck = R"([run]
+name = "t"
+end_time = 100.0
+output_interval = 50.0
+mechanics = false
+
+[mesh]
+generator = "rectangle"
+size = [0.01, 0.005]
+element_size = 0.0025
+material = "soil"
+
+[materials.soil]
+density = 1333.0
+moisture_conductivity = 1.0e-6
+initial_moisture = 0.2
+
+[[moisture.boundary]]
+on = "top"
+type = "flux"
+rate = -1.0e-5
+)";
+
+// Runs ydry on kGoodDeck with `find` replaced by `replace` (and extra arguments).
+ydry_test::CommandResult run_edited(const ydry_test::TempDir& dir, const std::string& find,
+                                    const std::string& replace, const std::string& extra = "") {
+  std::string text = kGoodDeck;
+  if (!find.empty()) {
+    const auto at = text.find(find);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, find.size(), replace);
+  }
+  const std::string deck = dir.file("deck.toml");
+  ydry_test::write_text(deck, text);
+  return run_ydry(deck + " -o " + dir.file("out") + " --quiet --force " + extra);
+}
+
+}  // namespace
+
+TEST_CASE("a good deck runs and writes every output", "[deck]") {
+  ydry_test::TempDir dir;
+  const auto r = run_edited(dir, "", "");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* f : {"t.pvd", "series.csv", "summary.json", "deck.toml", "log.txt",
+                        "frames/t_000000.vtu", "frames/t_000002.vtu"})
+    CHECK(std::filesystem::exists(dir.file("out/") + f));
+  CHECK(ydry_test::read_text(dir.file("out/summary.json")).find("\"completed\": true") != std::string::npos);
+}
+
+TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]") {
+  struct Case {
+    const char* what;
+    std::string find, replace, extra, expected;
+  };
+  const std::vector<Case> cases = {
+      {"unknown key", "initial_moisture = 0.2", "initial_moisture = 0.2\nporosity = 0.4", "",
+       "deck.toml:17: materials.soil.porosity: unknown key"},
+      {"wrong type", "end_time = 100.0", "end_time = \"long\"", "", "deck.toml:3: run.end_time: expected a number"},
+      {"out of range", "density = 1333.0", "density = -1.0", "", "deck.toml:14: materials.soil.density: value -1 out of range"},
+      {"missing required key", "end_time = 100.0\n", "", "", "run.end_time: required key is missing"},
+      {"missing mesh file", "generator = \"rectangle\"", "file = \"nowhere.msh\"", "",
+       "deck.toml:8: mesh.file: mesh file"},
+      {"unknown boundary", "on = \"top\"", "on = \"roof\"", "",
+       "deck.toml:19: moisture.boundary[0].on: the mesh has no boundary named \"roof\""},
+      {"bad enum", "type = \"flux\"", "type = \"suction\"", "", "deck.toml:20: moisture.boundary[0].type: \"suction\" is not one of"},
+      {"key of another boundary type", "rate = -1.0e-5", "rate = -1.0e-5\nvalue = 0.1", "",
+       "deck.toml:22: moisture.boundary[0].value: not used by a boundary of type \"flux\""},
+      {"TOML syntax", "density = 1333.0", "density = = 1", "", "deck.toml:14:"},
+      {"--set wrong type", "", "", "--set materials.soil.density=true",
+       "--set materials.soil.density=true: materials.soil.density: expected a number"},
+      {"--set unknown key", "", "", "--set run.speed=2", "--set run.speed=2: run.speed: unknown key"},
+      {"--set out of range", "", "", "--set materials.soil.poisson=0.5",
+       "materials.soil.poisson: value 0.5 out of range: must be in (-1, 0.5)"},
+      {"mechanics not built", "mechanics = false", "mechanics = true", "", "run.mechanics"},
+      {"material missing", "material = \"soil\"", "material = \"clay\"", "", "mesh: the mesh has material \"clay\""},
+  };
+  for (const Case& c : cases) {
+    ydry_test::TempDir dir;
+    const auto r = run_edited(dir, c.find, c.replace, c.extra);
+    INFO(c.what << ":\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(c.expected) != std::string::npos);
+  }
+}
+
+TEST_CASE("--set overrides reach the run and the resolved deck, defaults included", "[deck]") {
+  ydry_test::TempDir dir;
+  const auto r = run_edited(dir, "", "", "--set mesh.pattern=\\\"cross\\\" --set 'moisture.boundary[0].rate=-2e-5'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string resolved = ydry_test::read_text(dir.file("out/deck.toml"));
+  CHECK(resolved.find("pattern = 'cross'") != std::string::npos);
+  CHECK(resolved.find("rate = -2") != std::string::npos);
+  CHECK(resolved.find("moisture_safety = 0.9") != std::string::npos);  // a default, shown
+  // cross: 4 triangles per cell, 4 x 2 cells
+  CHECK(ydry_test::read_text(dir.file("out/summary.json")).find("\"elements\": 32") != std::string::npos);
+}
+
+TEST_CASE("a non-empty output folder that is not a ydry run is refused without --force", "[deck]") {
+  ydry_test::TempDir dir;
+  ydry_test::write_text(dir.file("deck.toml"), kGoodDeck);
+  std::filesystem::create_directories(dir.file("out"));
+  ydry_test::write_text(dir.file("out/thesis.tex"), "precious");
+  const std::string args = dir.file("deck.toml") + " -o " + dir.file("out") + " --quiet";
+  const auto refused = run_ydry(args);
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.output.find("--force") != std::string::npos);
+  CHECK(run_ydry(args + " --force").exit_code == 0);
+  CHECK(run_ydry(args).exit_code == 0);  // now it holds an earlier run: reused
+  CHECK(ydry_test::read_text(dir.file("out/thesis.tex")) == "precious");
+}
