@@ -96,7 +96,7 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
   }
 }
 
-TEST_CASE("--set overrides reach the run and the resolved deck, defaults included", "[deck]") {
+TEST_CASE("overrides given with --set reach the run and the resolved deck, defaults included", "[deck]") {
   ydry_test::TempDir dir;
   const auto r = run_edited(dir, "", "", "--set mesh.pattern=\\\"cross\\\" --set 'moisture.boundary[0].rate=-2e-5'");
   INFO(r.output);
