@@ -1,0 +1,110 @@
+#include "ycore/toml_reader.h"
+
+#include "ycore/input_error.h"
+
+namespace ydry {
+
+std::string source_of(const toml::node* node, const Origin& origin) {
+  if (node != nullptr) {
+    const auto it = origin.overrides.find(node);
+    if (it != origin.overrides.end()) return it->second;
+    if (node->source().path) return *node->source().path + ":" + std::to_string(node->source().begin.line);
+  }
+  return origin.file;
+}
+
+[[noreturn]] void fail(const toml::node* node, const Origin& origin, const std::string& key,
+                       const std::string& message) {
+  throw InputError(source_of(node, origin) + ": " + key + ": " + message);
+}
+
+const char* type_name(const toml::node& n) {
+  if (n.is_integer() || n.is_floating_point()) return "a number";
+  if (n.is_string()) return "a string";
+  if (n.is_boolean()) return "a boolean";
+  if (n.is_array_of_tables()) return "an array of tables";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date or time";
+}
+
+
+namespace {
+
+// One path segment of --set: a key, optionally indexing an array of tables ("boundary[1]").
+struct PathSegment {
+  std::string key;
+  long index = -1;
+};
+
+std::vector<PathSegment> split_key_path(const std::string& path, const std::string& where) {
+  std::vector<PathSegment> out;
+  std::istringstream in(path);
+  std::string part;
+  while (std::getline(in, part, '.')) {
+    PathSegment seg;
+    const auto bracket = part.find('[');
+    seg.key = part.substr(0, bracket);
+    if (bracket != std::string::npos) {
+      const auto close = part.find(']', bracket);
+      if (close != part.size() - 1) throw InputError(where + ": malformed index in '" + part + "'");
+      try {
+        seg.index = std::stol(part.substr(bracket + 1, close - bracket - 1));
+      } catch (const std::exception&) {
+        throw InputError(where + ": malformed index in '" + part + "'");
+      }
+    }
+    if (seg.key.empty()) throw InputError(where + ": empty key in '" + path + "'");
+    out.push_back(seg);
+  }
+  if (out.empty()) throw InputError(where + ": no key given");
+  return out;
+}
+
+// The override's value as a TOML node; text that is not a TOML value is taken as a string,
+// so `--set run.name=dry` works without shell quoting.
+toml::node_view<toml::node> parse_override_value(toml::table& holder, const std::string& text,
+                                                 const std::string& where) {
+  try {
+    holder = toml::parse("value = " + text, where);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{};
+    holder.insert("value", text);
+  }
+  return holder["value"];
+}
+
+}  // namespace
+
+void apply_override(toml::table& root, const std::string& override_text, Origin& origin) {
+  const std::string where = "--set " + override_text;
+  const auto eq = override_text.find('=');
+  if (eq == std::string::npos) throw InputError(where + ": expected key.path=value");
+  const std::vector<PathSegment> path = split_key_path(override_text.substr(0, eq), where);
+  toml::table holder;
+  toml::node_view<toml::node> value = parse_override_value(holder, override_text.substr(eq + 1), where);
+
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const PathSegment& seg = path[i];
+    toml::node* next = table->get(seg.key);
+    if (seg.index >= 0) {
+      if (!next || !next->is_array_of_tables())
+        throw InputError(where + ": " + seg.key + " is not an array of tables in the deck");
+      toml::array& arr = *next->as_array();
+      if (seg.index >= static_cast<long>(arr.size()))
+        throw InputError(where + ": index " + std::to_string(seg.index) + " past the " +
+                         std::to_string(arr.size()) + " entries of " + seg.key);
+      next = arr.get(static_cast<std::size_t>(seg.index));
+    } else if (!next) {
+      next = &table->insert(seg.key, toml::table{}).first->second;
+      origin.overrides[next] = where;
+    }
+    if (!next->is_table()) throw InputError(where + ": " + seg.key + " is not a table");
+    table = next->as_table();
+  }
+  if (path.back().index >= 0) throw InputError(where + ": the last key cannot be indexed");
+  origin.overrides[&table->insert_or_assign(path.back().key, *value.node()).first->second] = where;
+}
+
+}  // namespace ydry
