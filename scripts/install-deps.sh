@@ -2,7 +2,7 @@
 # Install the Debian 12 packages ydry needs (DESIGN section 7). Idempotent: installs only
 # what is missing, and runs `apt-get update` first when anything is.
 #   scripts/install-deps.sh                  build, test and plotting dependencies
-#   scripts/install-deps.sh --with-paraview  also paraview + xvfb for the ParaView client tests
+#   scripts/install-deps.sh --with-paraview  also the ParaView GUI and xvfb
 set -euo pipefail
 
 packages=(
@@ -13,6 +13,8 @@ packages=(
 )
 for arg in "$@"; do
   case "$arg" in
+    # Debian 12's python3-paraview (pvpython) conflicts with python3-vtk9, which libvtk9-dev
+    # needs: installing it removes the build dependencies. Only the GUI and xvfb come here.
     --with-paraview) packages+=(paraview xvfb) ;;
     -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
