@@ -78,6 +78,8 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"bad enum", "type = \"flux\"", "type = \"suction\"", "", "deck.toml:20: moisture.boundary[0].type: \"suction\" is not one of"},
       {"key of another boundary type", "rate = -1.0e-5", "rate = -1.0e-5\nvalue = 0.1", "",
        "deck.toml:22: moisture.boundary[0].value: not used by a boundary of type \"flux\""},
+      {"residual on an inflow", "rate = -1.0e-5", "rate = 1.0e-5\nresidual = 0.1", "",
+       "deck.toml:22: moisture.boundary[0].residual: only an outflow"},
       {"TOML syntax", "density = 1333.0", "density = = 1", "", "deck.toml:14:"},
       {"--set wrong type", "", "", "--set materials.soil.density=true",
        "--set materials.soil.density=true: materials.soil.density: expected a number"},

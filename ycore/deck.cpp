@@ -92,6 +92,7 @@ MoistureBoundaryDeck read_moisture_boundary(TableReader r) {
     b.type = MoistureBcType::flux;
     b.rate_kg_m2_s = r.number("rate", kAny, std::nullopt);
     if (auto res = r.optional_number("residual", kNonNegative)) {
+      if (b.rate_kg_m2_s >= 0) r.error("residual", "only an outflow (rate < 0) stops at a residual moisture");
       b.residual = *res;
       b.has_residual = true;
     }
