@@ -99,23 +99,7 @@ TEST_CASE("a broken joint splits moisture nodes along it, and a crack tip stays 
 }
 
 TEST_CASE("no joints between two materials, and each keeps its own moisture nodes", "[mesh]") {
-  ydry_test::TempDir dir;
-  ydry_test::write_text(dir.file("d.toml"), R"(
-[run]
-name = "two"
-end_time = 1.0
-output_interval = 1.0
-mechanics = false
-[mesh]
-file = ")" YDRY_SOURCE_DIR R"(/tests/data/two_materials.msh"
-[materials.soil]
-density = 1300.0
-moisture_conductivity = 1e-6
-initial_moisture = 0.3
-[materials.base]
-density = 2700.0
-)");
-  const State s = setup_state(load_deck(dir.file("d.toml"), {}));
+  const State s = setup_state(load_deck(YDRY_SOURCE_DIR "/tests/data/two_materials.toml", {}));
   for (std::size_t j = 0; j < s.joints.size(); ++j)
     CHECK(s.triangles.material[triangle_of(s.joints.node[4 * j])] ==
           s.triangles.material[triangle_of(s.joints.node[4 * j + 2])]);

@@ -26,27 +26,8 @@ double strip_closed_form(double x, double t, double q, double k, double rho) {
 
 // The two-material Gmsh mesh (unstructured, so triangles of every shape), both wet.
 Deck unstructured_deck() {
-  ydry_test::TempDir dir;
-  const std::string deck = dir.file("d.toml");
-  ydry_test::write_text(deck, R"(
-[run]
-name = "u"
-end_time = 1.0
-output_interval = 1.0
-mechanics = false
-thickness = 0.05
-[mesh]
-file = ")" YDRY_SOURCE_DIR R"(/tests/data/two_materials.msh"
-[materials.soil]
-density = 1300.0
-moisture_conductivity = 2.0e-6
-initial_moisture = 0.3
-[materials.base]
-density = 2000.0
-moisture_conductivity = 7.0e-6
-initial_moisture = 0.1
-)");
-  return load_deck(deck, {});
+  return load_deck(YDRY_SOURCE_DIR "/tests/data/two_materials.toml",
+                   {"materials.base.moisture_conductivity=7.0e-6", "materials.base.initial_moisture=0.1"});
 }
 
 }  // namespace
