@@ -58,6 +58,15 @@ TEST_CASE("a good deck runs and writes every output", "[deck]") {
                         "frames/t_000000.vtu", "frames/t_000002.vtu"})
     CHECK(std::filesystem::exists(dir.file("out/") + f));
   CHECK(ydry_test::read_text(dir.file("out/summary.json")).find("\"completed\": true") != std::string::npos);
+  CHECK(r.output.find("warning") == std::string::npos);
+}
+
+TEST_CASE("a material the mesh does not use is reported, not silently ignored", "[deck]") {
+  ydry_test::TempDir dir;
+  const auto r = run_edited(dir, "[[moisture.boundary]]", "[materials.clay]\ndensity = 1500.0\n\n[[moisture.boundary]]");
+  CHECK(r.exit_code == 0);
+  CHECK(r.output.find("warning: [materials.clay] is not used by any triangle") != std::string::npos);
+  CHECK(ydry_test::read_text(dir.file("out/log.txt")).find("[materials.clay] is not used") != std::string::npos);
 }
 
 TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]") {

@@ -96,6 +96,11 @@ int run(const RunOptions& opt) {
        << "mesh: " << state.triangles.size() << " triangles, " << state.joints.size() << " joints, "
        << state.moisture.size() << " moisture nodes";
   log.info(head.str());
+  std::vector<std::uint8_t> material_used(state.material_names.size(), 0);
+  for (const std::uint16_t m : state.triangles.material) material_used[m] = 1;
+  for (std::size_t m = 0; m < material_used.size(); ++m)
+    if (!material_used[m])
+      log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
   const double stable_step = stable_moisture_step(state, deck.moisture_safety);
   // Nothing diffuses or exchanges: the state only changes through flux terms, step per frame.
   const double max_step = std::isfinite(stable_step) ? stable_step : deck.output_interval_s;
