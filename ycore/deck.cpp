@@ -4,10 +4,7 @@
 #include "ycore/deck.h"
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
-#include <limits>
-#include <set>
 #include <sstream>
 
 #include "ycore/input_error.h"

@@ -67,15 +67,15 @@ void apply_override(toml::table& root, const std::string& override_text, Origin&
 class TableReader {
  public:
   TableReader(toml::table& table, std::string prefix, const Origin& origin)
-      : table_(table), prefix_(std::move(prefix)), file_(origin) {}
+      : table_(table), prefix_(std::move(prefix)), origin_(origin) {}
 
   std::string key_path(const std::string& key) const {
     return prefix_.empty() ? key : prefix_ + "." + key;
   }
   std::string where(const std::string& key) const {
-    return source_of(table_.get(key) ? table_.get(key) : &table_, file_) + ": " + key_path(key);
+    return source_of(table_.get(key) ? table_.get(key) : &table_, origin_) + ": " + key_path(key);
   }
-  std::string where_table() const { return source_of(&table_, file_) + ": " + prefix_; }
+  std::string where_table() const { return source_of(&table_, origin_) + ": " + prefix_; }
   bool has(const std::string& key) const { return table_.contains(key); }
   std::vector<std::string> keys() const {
     std::vector<std::string> out;
@@ -100,9 +100,9 @@ class TableReader {
       table_.insert_or_assign(key, fallback);
       return fallback;
     }
-    if (!n->is_integer()) fail(n, file_, key_path(key), std::string("expected an integer, got ") + type_name(*n));
+    if (!n->is_integer()) fail(n, origin_, key_path(key), std::string("expected an integer, got ") + type_name(*n));
     const std::int64_t v = n->as_integer()->get();
-    if (v < lo) fail(n, file_, key_path(key), "must be >= " + std::to_string(lo));
+    if (v < lo) fail(n, origin_, key_path(key), "must be >= " + std::to_string(lo));
     return v;
   }
   bool boolean(const std::string& key, bool fallback) {
@@ -111,19 +111,19 @@ class TableReader {
       table_.insert_or_assign(key, fallback);
       return fallback;
     }
-    if (!n->is_boolean()) fail(n, file_, key_path(key), std::string("expected true or false, got ") + type_name(*n));
+    if (!n->is_boolean()) fail(n, origin_, key_path(key), std::string("expected true or false, got ") + type_name(*n));
     return n->as_boolean()->get();
   }
   std::optional<std::string> optional_string(const std::string& key,
                                              const std::vector<std::string>& allowed = {}) {
     const toml::node* n = take(key);
     if (!n) return std::nullopt;
-    if (!n->is_string()) fail(n, file_, key_path(key), std::string("expected a string, got ") + type_name(*n));
+    if (!n->is_string()) fail(n, origin_, key_path(key), std::string("expected a string, got ") + type_name(*n));
     std::string v = n->as_string()->get();
     if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
-      fail(n, file_, key_path(key), "\"" + v + "\" is not one of " + list);
+      fail(n, origin_, key_path(key), "\"" + v + "\" is not one of " + list);
     }
     return v;
   }
@@ -138,7 +138,7 @@ class TableReader {
     const toml::node* n = take(key);
     if (!n) return std::nullopt;
     const toml::array* a = n->as_array();
-    if (!a || a->size() != 2) fail(n, file_, key_path(key), "expected an array of two numbers");
+    if (!a || a->size() != 2) fail(n, origin_, key_path(key), "expected an array of two numbers");
     return std::array<double, 2>{as_number(*a->get(0), key, range), as_number(*a->get(1), key, range)};
   }
   std::array<double, 2> pair(const std::string& key, const Range& range,
@@ -153,13 +153,13 @@ class TableReader {
     const toml::node* n = take(key);
     if (!n) missing(key);
     const toml::array* a = n->as_array();
-    if (!a || a->empty()) fail(n, file_, key_path(key), "expected a non-empty array of strings");
+    if (!a || a->empty()) fail(n, origin_, key_path(key), "expected a non-empty array of strings");
     std::vector<std::string> out;
     for (const toml::node& item : *a) {
-      if (!item.is_string()) fail(&item, file_, key_path(key), "expected strings");
+      if (!item.is_string()) fail(&item, origin_, key_path(key), "expected strings");
       const std::string v = item.as_string()->get();
       if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-        fail(&item, file_, key_path(key), "\"" + v + "\" is not allowed here");
+        fail(&item, origin_, key_path(key), "\"" + v + "\" is not allowed here");
       out.push_back(v);
     }
     return out;
@@ -168,7 +168,7 @@ class TableReader {
   toml::table& subtable(const std::string& key) {
     if (!table_.contains(key)) table_.insert(key, toml::table{});
     toml::node* n = take(key);
-    if (!n->is_table()) fail(n, file_, key_path(key), std::string("expected a table, got ") + type_name(*n));
+    if (!n->is_table()) fail(n, origin_, key_path(key), std::string("expected a table, got ") + type_name(*n));
     return *n->as_table();
   }
   // An array of tables, possibly absent.
@@ -176,21 +176,21 @@ class TableReader {
     toml::node* n = take(key);
     if (!n) return nullptr;
     if (!n->is_array_of_tables())
-      fail(n, file_, key_path(key), std::string("expected an array of tables ([[") + key_path(key) + "]]), got " + type_name(*n));
+      fail(n, origin_, key_path(key), std::string("expected an array of tables ([[") + key_path(key) + "]]), got " + type_name(*n));
     return n->as_array();
   }
   // Keys the schema never asked for are errors, not silently ignored.
   void finish() const {
     for (const auto& [k, v] : table_) {
       const std::string key(k.str());
-      if (!read_.count(key)) fail(&v, file_, key_path(key), "unknown key");
+      if (!read_.count(key)) fail(&v, origin_, key_path(key), "unknown key");
     }
   }
   [[noreturn]] void missing(const std::string& key) const {
-    fail(&table_, file_, key_path(key), "required key is missing");
+    fail(&table_, origin_, key_path(key), "required key is missing");
   }
   [[noreturn]] void error(const std::string& key, const std::string& message) const {
-    fail(table_.get(key) ? table_.get(key) : &table_, file_, key_path(key), message);
+    fail(table_.get(key) ? table_.get(key) : &table_, origin_, key_path(key), message);
   }
 
  private:
@@ -205,20 +205,20 @@ class TableReader {
     } else if (n.is_floating_point()) {
       v = n.as_floating_point()->get();
     } else {
-      fail(&n, file_, key_path(key), std::string("expected a number, got ") + type_name(n));
+      fail(&n, origin_, key_path(key), std::string("expected a number, got ") + type_name(n));
     }
-    if (!std::isfinite(v)) fail(&n, file_, key_path(key), "must be finite");
+    if (!std::isfinite(v)) fail(&n, origin_, key_path(key), "must be finite");
     if (!range.contains(v)) {
       std::ostringstream s;
       s << "value " << v << " out of range: must be " << range.describe();
-      fail(&n, file_, key_path(key), s.str());
+      fail(&n, origin_, key_path(key), s.str());
     }
     return v;
   }
 
   toml::table& table_;
   std::string prefix_;
-  const Origin& file_;
+  const Origin& origin_;
   std::set<std::string> read_;
 };
 
