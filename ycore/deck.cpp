@@ -65,6 +65,8 @@ MaterialDeck read_material(TableReader r, const std::string& name) {
   m.shrinkage_limit = r.optional_number("shrinkage_limit", kNonNegative);
   m.moisture_conductivity = r.optional_number("moisture_conductivity", kNonNegative);
   m.initial_moisture = r.optional_number("initial_moisture", kNonNegative);
+  m.stress_free_moisture = r.optional_number("stress_free_moisture", kNonNegative);
+  m.mass_scaling = r.number("mass_scaling", kPositive, 1.0);
   m.breakable = r.boolean("breakable", true);
   m.rigid = r.boolean("rigid", false);
   if (m.has_moisture()) {
@@ -128,7 +130,15 @@ void read_mechanics(TableReader r, Deck& d, const Origin& file) {
       MechanicsBoundaryDeck mb;
       mb.on = b.string("on", {}, std::nullopt);
       mb.where = b.where("on");
-      for (const std::string& axis : b.string_list("fix", {"x", "y"})) (axis == "x" ? mb.fix_x : mb.fix_y) = true;
+      if (b.has("fix"))
+        for (const std::string& axis : b.string_list("fix", {"x", "y"})) (axis == "x" ? mb.fix_x : mb.fix_y) = true;
+      if (b.has("velocity")) {
+        if (mb.fix_x || mb.fix_y) b.error("velocity", "prescribes both components; do not combine it with fix");
+        mb.driven = true;
+        mb.velocity = b.pair("velocity", kAny, std::nullopt);
+      } else if (!mb.fix_x && !mb.fix_y) {
+        b.error("fix", "give fix = [\"x\"], [\"y\"] or [\"x\", \"y\"], or velocity = [vx, vy]");
+      }
       b.finish();
       d.mechanics_boundaries.push_back(mb);
     }
@@ -170,6 +180,11 @@ void read_contact(TableReader r, Deck& d, const Origin& file) {
 
 void read_solver(TableReader r, Deck& d) {
   d.moisture_safety = r.number("moisture_safety", Range{0, 1, true, false}, 0.9);
+  d.max_coupling_step_s = r.number("max_coupling_step", kNonNegative, 0.0);
+  d.joint_penalty = r.number("joint_penalty", kPositive, 1000.0);
+  d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.5);
+  d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);
+  d.relaxation_max_steps = r.integer("relaxation_max_steps", 1, 200000);
   r.finish();
 }
 

@@ -25,6 +25,8 @@ struct MaterialDeck {
   std::optional<double> shrinkage_coefficient, shrinkage_limit;         // alpha, w_s
   std::optional<double> moisture_conductivity;   // k, kg/(m s); absent: no moisture model
   std::optional<double> initial_moisture;        // w_0, mass fraction
+  std::optional<double> stress_free_moisture;    // w_i of Eq. 18; default: initial_moisture
+  double mass_scaling = 1.0;                     // inertial mass factor of the relaxation
   bool breakable = true;
   bool rigid = false;
   // A material takes part in moisture diffusion when it has a conductivity.
@@ -48,7 +50,9 @@ struct MoistureBoundaryDeck {
 struct MechanicsBoundaryDeck {
   std::string on;
   std::string where;
-  bool fix_x = false, fix_y = false;
+  bool fix_x = false, fix_y = false;   // "fix" components
+  bool driven = false;                 // velocity = [vx, vy] given: both components prescribed
+  std::array<double, 2> velocity{};    // m/s
 };
 
 struct CrackSegmentDeck {
@@ -94,6 +98,11 @@ struct Deck {
 
   // [solver]
   double moisture_safety = 0.9;  // fraction of the explicit stability limit
+  double max_coupling_step_s = 0;     // upper bound of the staggered step; 0: none
+  double joint_penalty = 1000.0;      // joint penalty p / E
+  double mechanics_safety = 0.5;      // fraction of the explicit mechanical stability limit
+  double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
+  std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
 
   toml::table resolved;  // the deck as used: file, --set overrides and defaults
 };

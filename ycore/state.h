@@ -28,12 +28,25 @@ struct Nodes {                    // [3 * triangles] each
   std::vector<double> vx, vy;     // velocity, m/s
   std::vector<index_t> vertex;    // the mesh vertex this corner was made from
   std::vector<index_t> mnode;     // its moisture node; kNoIndex in a material without moisture
+  std::vector<double> fx, fy;     // net force, N (elements, joints, gravity)
+  std::vector<double> m;          // inertial mass of the pseudo-time relaxation, kg
+  std::vector<std::uint8_t> constraint;  // kFixX | kFixY: component prescribed (fixed or driven)
+  // [2 * nodes]: 4 j + k for each joint j whose node k this is (a corner lies on two edges
+  // of its triangle, so at most two); kNoIndex where there is none. Joint forces are
+  // gathered through it, so no node is written by two threads.
+  std::vector<index_t> joint_slot;
   std::size_t size() const { return x0.size(); }
 };
+constexpr std::uint8_t kFixX = 1, kFixY = 2;
 
 struct Triangles {                // [triangles] each
   std::vector<std::uint16_t> material;  // index into State::material_names
   std::vector<double> area0;            // initial area, m^2
+  std::vector<double> inv0;             // [4 * triangles] inverse of the initial edge matrix
+                                        // [X1-X0 | X2-X0], row-major
+  std::vector<double> mass_kg;          // physical mass rho A0 t (gravity uses it)
+  std::vector<double> shrinkage_strain; // eigenstrain eps_sh of Eq. 18 (negative on drying)
+  std::vector<double> sxx, syy, sxy;    // Cauchy stress, Pa (updated with the forces)
   std::size_t size() const { return area0.size(); }
 };
 
@@ -42,6 +55,12 @@ struct Joints {                   // one per interior edge inside a material
   // node 4j+0 meets 4j+3 and 4j+1 meets 4j+2.
   std::vector<index_t> node;
   std::vector<std::uint8_t> broken;     // [joints] 1 once the joint has failed, for good
+  std::vector<std::uint16_t> material;  // [joints] the material of both its triangles
+  std::vector<double> length0;          // [joints] initial length, m
+  std::vector<double> damage;           // [3 * joints] committed damage D at the two ends and
+                                        // the middle (never decreases: joints do not heal)
+  std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
+  std::vector<double> work;             // [joints] work done on the joint since t = 0, J
   std::size_t size() const { return broken.size(); }
 };
 
@@ -81,6 +100,41 @@ struct WaterBalance {
   double gross_kg = 0;       // |in| + |out| since t = 0: the scale when initial_kg is 0
 };
 
+// Derived per-material constants of the solid (built from the deck by init_mechanics).
+struct MaterialModel {
+  bool mechanical = false;     // has the elastic constants (every material of a mechanics run)
+  bool rigid = false, breakable = true;
+  double density = 0;          // kg/m^3
+  double mass_scaling = 1;     // inertial mass = mass_scaling x physical (pseudo-time only)
+  double lambda = 0, mu = 0;   // in-plane Lame constants (plane stress: lambda* = E nu/(1-nu^2))
+  double bulk3 = 0;            // 3 K*: isotropic stress per unit shrinkage strain (Eq. 19)
+  double young = 0;
+  double shrinkage_coefficient = 0, shrinkage_limit = 0, stress_free_moisture = 0;  // Eq. 18
+  double penalty = 0;          // joint penalty p, Pa
+  double tensile_strength = 0, cohesion = 0, tan_friction = 0, gf_I = 0, gf_II = 0;
+};
+
+// A [[mechanics.boundary]]: nodes whose components are fixed or driven at a velocity.
+struct MechanicsBoundary {
+  std::string name;
+  std::vector<index_t> nodes;   // unique, ascending
+  bool fix_x = false, fix_y = false;
+  double vx = 0, vy = 0;        // m/s of the prescribed components (0 when fixed)
+  double reaction_x = 0, reaction_y = 0;  // N, force the support exerts, last equilibrium
+  double work_J = 0;            // work done on the solid through this boundary since t = 0
+};
+
+// Relaxation scratch and the solid's energy bookkeeping.
+struct Mechanics {
+  std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
+  std::vector<double> fx_start, fy_start; // [nodes] forces then
+  double step_s = 0;                      // pseudo-time step of the explicit integration
+  double last_residual = 0;               // out-of-balance force ratio after the last relaxation
+  std::uint64_t steps = 0;                // mechanical steps since t = 0
+  std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap
+  double gravity_work_J = 0;              // work of gravity since t = 0
+};
+
 struct State {
   Nodes nodes;
   Triangles triangles;
@@ -88,6 +142,9 @@ struct State {
   MoistureNodes moisture;
   MoistureElements moisture_elements;
   WaterBalance water;
+  Mechanics mechanics;
+  std::vector<MechanicsBoundary> mechanics_boundaries;
+  std::vector<MaterialModel> materials;                    // by material id
   std::vector<std::string> material_names;                 // material id -> deck name
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
   double time_s = 0;
