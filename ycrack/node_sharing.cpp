@@ -1,26 +1,10 @@
 #include "ycrack/node_sharing.h"
 
-#include <algorithm>
 #include <numeric>
 
+#include "ycrack/union_find.h"
+
 namespace ydry {
-namespace {
-
-index_t find_root(std::vector<index_t>& parent, index_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];  // path halving
-    i = parent[i];
-  }
-  return i;
-}
-
-void unite(std::vector<index_t>& parent, index_t a, index_t b) {
-  a = find_root(parent, a);
-  b = find_root(parent, b);
-  if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
-
-}  // namespace
 
 index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_t>& has_moisture,
                              Nodes& nodes, MoistureNodes& moisture) {
