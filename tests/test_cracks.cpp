@@ -1,0 +1,134 @@
+// Crack statistics and crack output on hand-built states: a 40 mm x 20 mm rectangle of 5 mm
+// cells whose joints are broken and whose nodes are moved by hand.
+#include <catch2/catch.hpp>
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "tests/test_support.h"
+#include "ycore/build_state.h"
+#include "ycore/vtk_output.h"
+#include "ycrack/crack_statistics.h"
+
+using namespace ydry;
+
+namespace {
+
+constexpr double kWidth = 0.04, kHeight = 0.02, kCell = 0.005;
+
+State rectangle_state() {
+  Deck deck;
+  deck.materials["soil"] = MaterialDeck{};
+  MeshInput mesh = generate_rectangle(kWidth, kHeight, kCell, "right", "soil");
+  orient_counter_clockwise(mesh);
+  return build_state(mesh, deck);
+}
+
+// Breaks the joints on the vertical line x between heights y_from and y_to; returns how many.
+int break_vertical(State& s, double x, double y_from, double y_to) {
+  int count = 0;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    const index_t* n = &s.joints.node[4 * j];
+    const double ylo = std::min(s.nodes.y0[n[0]], s.nodes.y0[n[1]]);
+    const double yhi = std::max(s.nodes.y0[n[0]], s.nodes.y0[n[1]]);
+    if (std::abs(s.nodes.x0[n[0]] - x) < 1e-12 && std::abs(s.nodes.x0[n[1]] - x) < 1e-12 &&
+        ylo >= y_from - 1e-12 && yhi <= y_to + 1e-12) {
+      s.joints.broken[j] = 1;
+      ++count;
+    }
+  }
+  return count;
+}
+
+// Moves every triangle whose centroid lies right of x by dx, rigidly.
+void shift_right_of(State& s, double x, double dx) {
+  for (index_t t = 0; t < s.triangles.size(); ++t) {
+    const double cx = (s.nodes.x0[3 * t] + s.nodes.x0[3 * t + 1] + s.nodes.x0[3 * t + 2]) / 3.0;
+    if (cx > x)
+      for (int a = 0; a < 3; ++a) s.nodes.x[corner_node(t, a)] += dx;
+  }
+}
+
+// A full-height crack at x = 30 mm opened by 80 um, and one through the upper half at
+// x = 10 mm opened by 200 um. The first is found first (its joints come first), so the
+// order of the result is the order in x, not of discovery.
+State two_crack_state() {
+  State s = rectangle_state();
+  REQUIRE(break_vertical(s, 0.03, 0.0, kHeight) == 4);
+  REQUIRE(break_vertical(s, 0.01, kHeight / 2, kHeight) == 2);
+  shift_right_of(s, 0.01, 200e-6);
+  shift_right_of(s, 0.03, 80e-6);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("two broken vertical lines are two cracks, in x order, with their lengths", "[crack]") {
+  const std::vector<Crack> cracks = find_cracks(two_crack_state(), 0.0);
+  REQUIRE(cracks.size() == 2);
+  CHECK(cracks[0].x_m == Approx(0.01).margin(200e-6));
+  CHECK(cracks[1].x_m == Approx(0.03 + 200e-6).margin(80e-6));  // it moved with the right part
+  CHECK(cracks[0].length_m == Approx(kHeight / 2).epsilon(1e-12));
+  CHECK(cracks[1].length_m == Approx(kHeight).epsilon(1e-12));
+  CHECK(cracks[0].joints.size() == 2);
+  CHECK(cracks[1].joints.size() == 4);
+}
+
+TEST_CASE("a crack reaching the bottom penetrates, one stopping halfway does not", "[crack]") {
+  const std::vector<Crack> cracks = find_cracks(two_crack_state(), 0.0);
+  REQUIRE(cracks.size() == 2);
+  CHECK_FALSE(cracks[0].penetrating);
+  CHECK(cracks[1].penetrating);
+}
+
+TEST_CASE("a crack's width is the opening imposed at its mouth on the top surface", "[crack]") {
+  const std::vector<Crack> cracks = find_cracks(two_crack_state(), 0.0);
+  REQUIRE(cracks.size() == 2);
+  CHECK(cracks[0].width_m == Approx(200e-6).epsilon(1e-9));
+  CHECK(cracks[1].width_m == Approx(80e-6).epsilon(1e-9));
+}
+
+TEST_CASE("the width threshold drops the narrower crack", "[crack]") {
+  const State s = two_crack_state();
+  const std::vector<Crack> cracks = find_cracks(s, 100e-6);
+  REQUIRE(cracks.size() == 1);
+  CHECK(cracks[0].width_m == Approx(200e-6).epsilon(1e-9));
+  CHECK(find_cracks(s, 300e-6).empty());
+}
+
+TEST_CASE("an internal crack is measured at its highest vertex", "[crack]") {
+  // One joint on x = 20 mm from y = 5 mm to 10 mm: no vertex on a surface. Its first
+  // triangle's side is pulled back along the normal by 50 um.
+  State s = rectangle_state();
+  REQUIRE(break_vertical(s, 0.02, 0.005, 0.01) == 1);
+  index_t joint = 0;
+  while (!s.joints.broken[joint]) ++joint;
+  const index_t* n = &s.joints.node[4 * joint];
+  const double nx = s.nodes.y0[n[0]] < s.nodes.y0[n[1]] ? -1.0 : 1.0;  // into the first triangle
+  for (const int k : {0, 1}) s.nodes.x[n[k]] += 50e-6 * nx;
+  const std::vector<Crack> cracks = find_cracks(s, 0.0);
+  REQUIRE(cracks.size() == 1);
+  CHECK(cracks[0].width_m == Approx(50e-6).epsilon(1e-9));
+  CHECK(cracks[0].length_m == Approx(0.005).epsilon(1e-12));
+  CHECK(cracks[0].x_m == Approx(0.02).margin(50e-6));
+  CHECK_FALSE(cracks[0].penetrating);
+}
+
+TEST_CASE("the crack summary: count, mean and total width, mean length", "[crack]") {
+  const CrackSummary sum = summarize_cracks(find_cracks(two_crack_state(), 0.0));
+  CHECK(sum.count == 2);
+  CHECK(sum.total_width_m == Approx(280e-6).epsilon(1e-9));
+  CHECK(sum.mean_width_m == Approx(140e-6).epsilon(1e-9));
+  CHECK(sum.mean_length_m == Approx(0.75 * kHeight).epsilon(1e-12));
+  const CrackSummary none = summarize_cracks({});
+  CHECK(none.count == 0);
+  CHECK(none.total_width_m == 0.0);
+  CHECK(std::isnan(none.mean_width_m));
+  CHECK(std::isnan(none.mean_length_m));
+}

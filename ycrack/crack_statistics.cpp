@@ -1,0 +1,148 @@
+#include "ycrack/crack_statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "ycore/joint_law.h"
+#include "ycrack/union_find.h"
+
+namespace ydry {
+namespace {
+
+// Vertices on an edge that no joint sits on, intact or broken: the free and interface
+// surfaces of every material. A joint sits on the edge starting at its node 0 (first
+// triangle) and at its node 2 (second triangle).
+std::vector<std::uint8_t> surface_vertices(const State& s, index_t nvertices) {
+  const Nodes& n = s.nodes;
+  std::vector<std::uint8_t> jointed(n.size(), 0);
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    jointed[s.joints.node[4 * j]] = 1;
+    jointed[s.joints.node[4 * j + 2]] = 1;
+  }
+  std::vector<std::uint8_t> surface(nvertices, 0);
+  for (index_t c = 0; c < n.size(); ++c) {
+    if (jointed[c]) continue;
+    const index_t next = corner_node(triangle_of(c), (c % 3 + 1) % 3);
+    surface[n.vertex[c]] = surface[n.vertex[next]] = 1;
+  }
+  return surface;
+}
+
+// Lowest initial y and layer height of each material.
+struct Layer {
+  double bottom_y0 = std::numeric_limits<double>::infinity();
+  double top_y0 = -std::numeric_limits<double>::infinity();
+};
+std::vector<Layer> material_layers(const State& s) {
+  std::vector<Layer> layers(s.material_names.size());
+  for (index_t c = 0; c < s.nodes.size(); ++c) {
+    Layer& l = layers[s.triangles.material[triangle_of(c)]];
+    l.bottom_y0 = std::min(l.bottom_y0, s.nodes.y0[c]);
+    l.top_y0 = std::max(l.top_y0, s.nodes.y0[c]);
+  }
+  return layers;
+}
+
+// The best mouth so far: a surface vertex beats an internal one, then the higher y0, then
+// the lower vertex id.
+struct Mouth {
+  index_t vertex = kNoIndex;
+  std::uint16_t material = 0;
+  bool surface = false;
+  double y0 = 0;
+  bool beaten_by(const Mouth& m) const {
+    if (vertex == kNoIndex) return true;
+    if (m.surface != surface) return m.surface;
+    if (m.y0 != y0) return m.y0 > y0;
+    return m.vertex < vertex;
+  }
+};
+
+}  // namespace
+
+std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
+  const Nodes& n = s.nodes;
+  const Joints& joints = s.joints;
+  const index_t nvertices =
+      n.vertex.empty() ? 0 : *std::max_element(n.vertex.begin(), n.vertex.end()) + 1;
+
+  std::vector<index_t> parent(nvertices);
+  std::iota(parent.begin(), parent.end(), index_t(0));
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    if (joints.broken[j]) unite(parent, n.vertex[joints.node[4 * j]], n.vertex[joints.node[4 * j + 1]]);
+
+  const std::vector<std::uint8_t> surface = surface_vertices(s, nvertices);
+  const std::vector<Layer> layers = material_layers(s);
+  // Cracks numbered in the order of their first broken joint.
+  std::vector<index_t> crack_of_root(nvertices, kNoIndex);
+  std::vector<Crack> cracks;
+  std::vector<Mouth> mouths;
+  for (index_t j = 0; j < joints.size(); ++j) {
+    if (!joints.broken[j]) continue;
+    const index_t* jn = &joints.node[4 * j];
+    index_t& k = crack_of_root[find_root(parent, n.vertex[jn[0]])];
+    if (k == kNoIndex) {
+      k = static_cast<index_t>(cracks.size());
+      cracks.emplace_back();
+      mouths.emplace_back();
+    }
+    Crack& crack = cracks[k];
+    crack.joints.push_back(j);
+    crack.length_m += joint_kinematics(n, jn).length;
+    const std::uint16_t material = s.triangles.material[triangle_of(jn[0])];
+    const Layer& layer = layers[material];
+    for (int end = 0; end < 2; ++end) {
+      const index_t v = n.vertex[jn[end]];
+      const double y0 = n.y0[jn[end]];
+      if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
+      const Mouth candidate{v, material, surface[v] != 0, y0};
+      if (mouths[k].beaten_by(candidate)) mouths[k] = candidate;
+    }
+  }
+
+  std::vector<index_t> crack_at_mouth(nvertices, kNoIndex);
+  for (index_t k = 0; k < cracks.size(); ++k) {
+    crack_at_mouth[mouths[k].vertex] = k;
+    cracks[k].width_m = -std::numeric_limits<double>::infinity();
+    for (const index_t j : cracks[k].joints) {
+      const index_t* jn = &joints.node[4 * j];
+      const JointKinematics kin = joint_kinematics(n, jn);
+      for (int end = 0; end < 2; ++end)
+        if (n.vertex[jn[end]] == mouths[k].vertex)
+          cracks[k].width_m = std::max(cracks[k].width_m, kin.opening[end]);
+    }
+  }
+  std::vector<int> corners_at_mouth(cracks.size(), 0);
+  for (index_t c = 0; c < n.size(); ++c) {
+    const index_t k = crack_at_mouth[n.vertex[c]];
+    if (k == kNoIndex || s.triangles.material[triangle_of(c)] != mouths[k].material) continue;
+    cracks[k].x_m += n.x[c];
+    ++corners_at_mouth[k];
+  }
+  for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].x_m /= corners_at_mouth[k];
+
+  cracks.erase(std::remove_if(cracks.begin(), cracks.end(),
+                              [&](const Crack& c) { return !(c.width_m > width_threshold_m); }),
+               cracks.end());
+  std::stable_sort(cracks.begin(), cracks.end(),
+                   [](const Crack& a, const Crack& b) { return a.x_m < b.x_m; });
+  return cracks;
+}
+
+CrackSummary summarize_cracks(const std::vector<Crack>& cracks) {
+  CrackSummary sum;
+  sum.count = static_cast<int>(cracks.size());
+  double length = 0;
+  for (const Crack& c : cracks) {
+    sum.total_width_m += c.width_m;
+    length += c.length_m;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  sum.mean_width_m = cracks.empty() ? nan : sum.total_width_m / sum.count;
+  sum.mean_length_m = cracks.empty() ? nan : length / sum.count;
+  return sum;
+}
+
+}  // namespace ydry
