@@ -132,3 +132,58 @@ TEST_CASE("the crack summary: count, mean and total width, mean length", "[crack
   CHECK(std::isnan(none.mean_width_m));
   CHECK(std::isnan(none.mean_length_m));
 }
+
+namespace {
+
+vtkNew<vtkXMLUnstructuredGridReader> read_vtu(const std::string& path) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader;
+}
+
+}  // namespace
+
+TEST_CASE("the cracks frame holds a line per broken joint with its opening, and reads back", "[crack][output]") {
+  const ydry_test::TempDir dir;
+  std::filesystem::create_directories(dir.path / "frames");
+  FrameSeries series{dir.path.string(), "t", {}, {}};
+  State s = rectangle_state();
+  write_frame(series, s, 0.0);  // no broken joint yet: an empty grid
+  State cracked = two_crack_state();
+  const std::size_t nt = cracked.triangles.size();
+  cracked.triangles.sxx.assign(nt, 1.0e3);
+  cracked.triangles.syy.assign(nt, -2.0e3);
+  cracked.triangles.sxy.assign(nt, 0.5e3);
+  write_frame(series, cracked, 3600.0);
+
+  auto empty = read_vtu(dir.file("frames/t_cracks_000000.vtu"));
+  CHECK(empty->GetErrorCode() == 0);
+  CHECK(empty->GetOutput()->GetNumberOfCells() == 0);
+  CHECK(read_vtu(dir.file("frames/t_000000.vtu"))->GetOutput()->GetCellData()->GetArray("stress") == nullptr);
+
+  auto lines = read_vtu(dir.file("frames/t_cracks_000001.vtu"));
+  vtkUnstructuredGrid* grid = lines->GetOutput();
+  REQUIRE(grid->GetNumberOfCells() == 6);
+  vtkDataArray* opening = grid->GetCellData()->GetArray("opening");
+  REQUIRE(opening != nullptr);
+  REQUIRE(grid->GetCellData()->GetArray("slip") != nullptr);
+  // The cells follow the joints in order: the first one is the bottom of the x = 30 mm crack.
+  CHECK(opening->GetTuple1(0) == Approx(80e-6).epsilon(1e-9));
+  double p[3];
+  grid->GetPoint(0, p);
+  CHECK(p[0] == Approx(0.03 + 200e-6 + 40e-6).margin(1e-12));
+  CHECK(p[1] == Approx(0.0).margin(1e-12));
+  CHECK(grid->GetCellData()->GetArray("slip")->GetTuple1(0) == Approx(0.0).margin(1e-15));
+
+  auto bulk = read_vtu(dir.file("frames/t_000001.vtu"));
+  vtkDataArray* stress = bulk->GetOutput()->GetCellData()->GetArray("stress");
+  REQUIRE(stress != nullptr);
+  CHECK(stress->GetNumberOfComponents() == 3);
+  CHECK(std::string(stress->GetComponentName(2)) == "sxy");
+  CHECK(stress->GetComponent(0, 1) == Approx(-2.0e3).epsilon(1e-15));
+
+  const std::string pvd = ydry_test::read_text(dir.file("t.pvd"));
+  CHECK(pvd.find("timestep=\"3600\" part=\"1\" file=\"frames/t_cracks_000001.vtu\"") != std::string::npos);
+  CHECK(pvd.find("timestep=\"3600\" part=\"0\" file=\"frames/t_000001.vtu\"") != std::string::npos);
+}

@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 
+#include "ycore/joint_law.h"
 #include "ycore/output_files.h"
 
 namespace ydry {
@@ -71,6 +72,51 @@ vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
   grid->GetPointData()->AddArray(velocity);
   grid->GetCellData()->AddArray(material);
   grid->GetCellData()->AddArray(cell_moisture);
+  if (s.triangles.sxx.size() == static_cast<std::size_t>(nt)) {  // a run with mechanics
+    auto stress = named_array("stress", 3, nt);
+    stress->SetComponentName(0, "sxx");
+    stress->SetComponentName(1, "syy");
+    stress->SetComponentName(2, "sxy");
+    for (vtkIdType t = 0; t < nt; ++t)
+      stress->SetTuple3(t, s.triangles.sxx[t], s.triangles.syy[t], s.triangles.sxy[t]);
+    grid->GetCellData()->AddArray(stress);
+  }
+  return grid;
+}
+
+// One line per broken joint between the midpoints of its node pairs at the two ends, with
+// the mean opening and slip of the ends.
+vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
+  const Nodes& n = s.nodes;
+  vtkIdType nb = 0;
+  for (const std::uint8_t b : s.joints.broken) nb += b ? 1 : 0;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(2 * nb);
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(nb, 2 * nb);
+  auto opening = named_array("opening", 1, nb);
+  auto slip = named_array("slip", 1, nb);
+  vtkIdType line = 0;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    if (!s.joints.broken[j]) continue;
+    const index_t* jn = &s.joints.node[4 * j];
+    for (int end = 0; end < 2; ++end) {
+      const index_t a = jn[end], b = jn[3 - end];
+      points->SetPoint(2 * line + end, 0.5 * (n.x[a] + n.x[b]), 0.5 * (n.y[a] + n.y[b]), 0.0);
+    }
+    const vtkIdType ids[2] = {2 * line, 2 * line + 1};
+    cells->InsertNextCell(2, ids);
+    const JointKinematics k = joint_kinematics(n, jn);
+    opening->SetValue(line, 0.5 * (k.opening[0] + k.opening[1]));
+    slip->SetValue(line, 0.5 * (k.slip[0] + k.slip[1]));
+    ++line;
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->SetCells(VTK_LINE, cells);
+  grid->GetCellData()->AddArray(opening);
+  grid->GetCellData()->AddArray(slip);
   return grid;
 }
 
@@ -86,6 +132,13 @@ void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   std::filesystem::rename(tmp, path);
 }
 
+// frames/NAME_NNNNNN.vtu, or frames/NAME_cracks_NNNNNN.vtu for the cracks.
+std::string frame_file(const std::string& name, const char* part, std::size_t index) {
+  char number[32];
+  std::snprintf(number, sizeof number, "_%06zu.vtu", index);
+  return "frames/" + name + part + number;
+}
+
 std::string pvd_text(const FrameSeries& series) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
@@ -93,7 +146,9 @@ std::string pvd_text(const FrameSeries& series) {
   char time[32];
   for (std::size_t i = 0; i < series.times.size(); ++i) {
     std::snprintf(time, sizeof time, "%.17g", series.times[i]);
-    out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << series.files[i] << "\"/>\n";
+    out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << series.files[i] << "\"/>\n"
+        << "    <DataSet timestep=\"" << time << "\" part=\"1\" file=\""
+        << frame_file(series.name, "_cracks", i) << "\"/>\n";
   }
   out << "  </Collection>\n</VTKFile>\n";
   return out.str();
@@ -102,10 +157,10 @@ std::string pvd_text(const FrameSeries& series) {
 }  // namespace
 
 void write_frame(FrameSeries& series, const State& state, double time_s) {
-  char file[64];
-  std::snprintf(file, sizeof file, "_%06zu.vtu", series.times.size());
-  const std::string relative = "frames/" + series.name + file;
+  const std::size_t index = series.times.size();
+  const std::string relative = frame_file(series.name, "", index);
   write_grid(bulk_grid(state), series.outdir + "/" + relative);
+  write_grid(crack_grid(state), series.outdir + "/" + frame_file(series.name, "_cracks", index));
   series.times.push_back(time_s);
   series.files.push_back(relative);
   write_file_atomically(series.outdir + "/" + series.name + ".pvd", pvd_text(series));

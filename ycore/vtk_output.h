@@ -12,11 +12,14 @@ namespace ydry {
 struct FrameSeries {
   std::string outdir, name;
   std::vector<double> times;        // s, one per frame written
-  std::vector<std::string> files;   // relative to outdir
+  std::vector<std::string> files;   // the bulk frames, relative to outdir
 };
 
 // Writes frames/NAME_NNNNNN.vtu (the deformed bulk mesh: point data moisture,
-// displacement, velocity; cell data material, moisture) and rewrites NAME.pvd.
+// displacement, velocity; cell data material, moisture, and stress sxx syy sxy when the
+// state has stresses), frames/NAME_cracks_NNNNNN.vtu (a line per broken joint between the
+// midpoints of its end node pairs; cell data opening and slip, m, the means of the two
+// ends) and rewrites NAME.pvd, which lists both per frame as parts 0 and 1.
 void write_frame(FrameSeries& series, const State& state, double time_s);
 
 }  // namespace ydry
