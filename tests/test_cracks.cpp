@@ -9,12 +9,15 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "tests/test_support.h"
 #include "ycore/build_state.h"
 #include "ycore/vtk_output.h"
 #include "ycrack/crack_statistics.h"
+#include "ycrack/cracks_csv.h"
 
 using namespace ydry;
 
@@ -186,4 +189,33 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   const std::string pvd = ydry_test::read_text(dir.file("t.pvd"));
   CHECK(pvd.find("timestep=\"3600\" part=\"1\" file=\"frames/t_cracks_000001.vtu\"") != std::string::npos);
   CHECK(pvd.find("timestep=\"3600\" part=\"0\" file=\"frames/t_000001.vtu\"") != std::string::npos);
+}
+
+TEST_CASE("cracks.csv gains a row per crack at each output time and keeps the earlier ones", "[crack][output]") {
+  const ydry_test::TempDir dir;
+  CracksCsv csv{dir.file("cracks.csv"), ""};
+  append_cracks_csv(csv, 0.0, find_cracks(rectangle_state(), 1e-5));
+  CHECK(ydry_test::read_text(csv.path) == "time_s,crack_id,x_m,width_m,length_m,penetrating\n");
+  append_cracks_csv(csv, 7200.0, find_cracks(two_crack_state(), 1e-5));
+
+  std::istringstream text(ydry_test::read_text(csv.path));
+  std::string header, line;
+  std::getline(text, header);
+  CHECK(header == "time_s,crack_id,x_m,width_m,length_m,penetrating");
+  const double expected_width[2] = {200e-6, 80e-6}, expected_length[2] = {kHeight / 2, kHeight};
+  int rows = 0;
+  while (std::getline(text, line) && rows < 2) {
+    double time = 0, x = 0, width = 0, length = 0;
+    int id = -1, penetrating = -1;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf,%d", &time, &id, &x, &width, &length,
+                        &penetrating) == 6);
+    CHECK(id == rows);
+    CHECK(time == Approx(7200.0).epsilon(1e-15));
+    CHECK(width == Approx(expected_width[rows]).epsilon(1e-9));
+    CHECK(length == Approx(expected_length[rows]).epsilon(1e-12));
+    CHECK(penetrating == rows);  // only the full-height crack, second in x
+    ++rows;
+  }
+  CHECK(rows == 2);
+  CHECK_FALSE(std::getline(text, line));
 }

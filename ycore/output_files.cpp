@@ -18,13 +18,6 @@ namespace {
 // Marks a folder as a ydry output folder, so a later run may reuse it without --force.
 constexpr const char* kMarker = ".ydry-output";
 
-std::string format_double(double v) {
-  if (std::isnan(v)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
@@ -52,6 +45,13 @@ const std::vector<std::string> kSeriesColumns = {
     "time_s", "mean_moisture", "water_lost_kg", "water_balance_error", "crack_count",
     "mean_crack_width_m", "total_crack_width_m", "mean_crack_length_m",
     "right_end_displacement_m", "kinetic_energy_J", "relaxation_residual"};
+
+std::string format_double(double v) {
+  if (std::isnan(v)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
 
 void write_file_atomically(const std::string& path, const std::string& content) {
   const std::string tmp = path + ".tmp";

@@ -13,6 +13,9 @@ namespace ydry {
 // Writes `content` to `path` through `path`.tmp and a rename.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// A number as the CSV files write it: round-trip precision (%.17g), "nan" for NaN.
+std::string format_double(double v);
+
 // Makes OUTDIR ready: creates it, or accepts it when empty or holding an earlier ydry run
 // (whose outputs are then removed); refuses anything else unless `force`. InputError.
 void prepare_output_dir(const std::string& outdir, bool force);
