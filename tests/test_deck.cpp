@@ -95,7 +95,9 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"--set unknown key", "", "", "--set run.speed=2", "--set run.speed=2: run.speed: unknown key"},
       {"--set out of range", "", "", "--set materials.soil.poisson=0.5",
        "materials.soil.poisson: value 0.5 out of range: must be in (-1, 0.5)"},
-      {"mechanics not built", "mechanics = false", "mechanics = true", "", "run.mechanics"},
+      {"key the solid needs", "mechanics = false", "mechanics = true", "", "deck.toml:13: materials.soil.young: missing"},
+      {"velocity with fix", "", "", "--set 'mechanics.boundary=[{on=\"left\",fix=[\"x\"],velocity=[1.0,0.0]}]'",
+       "mechanics.boundary[0].velocity: prescribes both components"},
       {"material missing", "material = \"soil\"", "material = \"clay\"", "", "mesh: the mesh has material \"clay\""},
   };
   for (const Case& c : cases) {

@@ -93,7 +93,7 @@ TEST_CASE("the stable moisture step is within the true explicit limit 2 / lambda
 TEST_CASE("water in through a flux boundary equals rate x length x thickness x time", "[moisture]") {
   const double rate = 1e-5, thickness = 0.05, height = 0.01, duration = 3.0e5;
   State s = setup_state(strip_deck({"run.thickness=0.05"}));
-  advance_to(s, duration, stable_moisture_step(s, 0.9));
+  advance_to(s, strip_deck({"run.thickness=0.05"}), duration, stable_moisture_step(s, 0.9));
   const double expected = rate * height * thickness * duration;
   CHECK(total_water_kg(s) - s.water.initial_kg == Approx(expected).epsilon(1e-12));
   CHECK(s.water.net_in_kg + s.water.net_in_carry == Approx(expected).epsilon(1e-12));
@@ -106,7 +106,7 @@ TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture]
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
     State s = setup_state(deck);
-    advance_to(s, 2.0e5, stable_moisture_step(s, 0.9));
+    advance_to(s, deck, 2.0e5, stable_moisture_step(s, 0.9));
     w[threads - 1] = s.moisture.w;
   }
   omp_set_num_threads(omp_get_num_procs());
@@ -116,7 +116,7 @@ TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture]
 TEST_CASE("the 5 mm strip matches Eq. 20 within 0.5 % (relative L2) at 800k s", "[moisture][verification]") {
   const Deck deck = strip_deck();
   State s = setup_state(deck);
-  advance_to(s, 8.0e5, stable_moisture_step(s, deck.moisture_safety));
+  advance_to(s, deck, 8.0e5, stable_moisture_step(s, deck.moisture_safety));
   double err2 = 0, ref2 = 0;
   for (index_t i = 0; i < s.moisture.size(); ++i) {
     const index_t c = s.moisture.corner[s.moisture.corner_offset[i]];

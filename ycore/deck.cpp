@@ -21,6 +21,9 @@ void read_run(TableReader r, Deck& d) {
   d.thickness_m = r.number("thickness", kPositive, 1.0);
   d.end_time_s = r.number("end_time", kPositive, std::nullopt);
   d.output_interval_s = r.number("output_interval", kPositive, std::nullopt);
+  d.series_interval_s = r.number("series_interval", kPositive, d.output_interval_s);
+  if (d.series_interval_s > d.output_interval_s)
+    r.error("series_interval", "is longer than run.output_interval (tables get at least a row per frame)");
   d.gravity = r.pair("gravity", kAny, std::array<double, 2>{0.0, -9.81});
   d.mechanics = r.boolean("mechanics", true);
   d.seed = r.integer("seed", 0, 1);
@@ -182,7 +185,7 @@ void read_solver(TableReader r, Deck& d) {
   d.moisture_safety = r.number("moisture_safety", Range{0, 1, true, false}, 0.9);
   d.max_coupling_step_s = r.number("max_coupling_step", kNonNegative, 0.0);
   d.joint_penalty = r.number("joint_penalty", kPositive, 1000.0);
-  d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.5);
+  d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.8);
   d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);
   d.relaxation_max_steps = r.integer("relaxation_max_steps", 1, 200000);
   r.finish();

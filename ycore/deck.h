@@ -68,7 +68,8 @@ struct Deck {
   bool plane_strain = false;
   double thickness_m = 1.0;
   double end_time_s = 0;
-  double output_interval_s = 0;
+  double output_interval_s = 0;  // between frames
+  double series_interval_s = 0;  // between rows of series.csv, cracks.csv and reactions.csv
   std::array<double, 2> gravity{0.0, -9.81};
   bool mechanics = true;
   std::int64_t seed = 1;
@@ -100,7 +101,7 @@ struct Deck {
   double moisture_safety = 0.9;  // fraction of the explicit stability limit
   double max_coupling_step_s = 0;     // upper bound of the staggered step; 0: none
   double joint_penalty = 1000.0;      // joint penalty p / E
-  double mechanics_safety = 0.5;      // fraction of the explicit mechanical stability limit
+  double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "version.h"
@@ -12,28 +14,66 @@
 #include "ycore/output_files.h"
 #include "ycore/progress.h"
 #include "ycore/vtk_output.h"
+#include "ycore/mechanics.h"
+#include "ycrack/crack_statistics.h"
+#include "ycrack/cracks_csv.h"
 #include "ycrack/node_sharing.h"
+#include "ycrack/precracks.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {
 namespace {
 
-// Features of the deck schema whose physics is not built yet: refused, never ignored.
-void refuse_unbuilt_features(const Deck& deck) {
-  const std::string file = deck.path;
-  if (deck.mechanics)
-    throw InputError(file + ": run.mechanics: the mechanical solver is not built yet; "
-                            "set run.mechanics = false for a moisture-only run");
-  if (!deck.cracks.empty())
-    throw InputError(deck.cracks.front().where +
-                     ": pre-existing cracks need the node-sharing split, which is not built yet");
+bool any_moisture(const State& s) { return s.moisture.size() > 0; }
+
+RelaxationControls relaxation_controls(const Deck& deck) {
+  return {deck.relaxation_tolerance, deck.relaxation_max_steps};
 }
 
-std::vector<double> series_row(const State& s) {
+// The corners of the top-right vertex of the breakable material (the largest x, then the
+// largest y there): right_end_displacement_m is their mean x-displacement (DESIGN 5).
+std::vector<index_t> right_end_corners(const State& s) {
+  const Nodes& n = s.nodes;
+  std::vector<index_t> corners;
+  double best_x = -INFINITY, best_y = -INFINITY, span = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) span = std::max({span, std::fabs(n.x0[i]), std::fabs(n.y0[i])});
+  const double tolerance = 1e-9 * span;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const MaterialModel& m = s.materials[s.triangles.material[triangle_of(index_t(i))]];
+    if (!m.mechanical || !m.breakable) continue;
+    const bool further = n.x0[i] > best_x + tolerance ||
+                         (n.x0[i] > best_x - tolerance && n.y0[i] > best_y + tolerance);
+    if (further) best_x = n.x0[i], best_y = n.y0[i], corners.clear();
+    if (std::fabs(n.x0[i] - best_x) <= tolerance && std::fabs(n.y0[i] - best_y) <= tolerance)
+      corners.push_back(index_t(i));
+  }
+  return corners;
+}
+
+std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double water_lost = s.water.initial_kg - total_water_kg(s);
-  // Crack, displacement, energy and relaxation columns need mechanics: NaN in this build.
-  return {s.time_s, mean_moisture(s), water_lost, water_balance_error(s), nan, nan, nan, nan, nan, nan, nan};
+  const bool moisture = any_moisture(s);
+  std::vector<double> row = {s.time_s,
+                             moisture ? mean_moisture(s) : nan,
+                             moisture ? s.water.initial_kg - total_water_kg(s) : nan,
+                             moisture ? water_balance_error(s) : nan};
+  if (!deck.mechanics) {
+    row.resize(kSeriesColumns.size(), nan);
+    return row;
+  }
+  const CrackSummary cracks = summarize_cracks(find_cracks(s, deck.crack_width_threshold_m));
+  double right_end_ux = nan;
+  if (!right_end.empty()) {
+    right_end_ux = 0;
+    for (const index_t i : right_end) right_end_ux += (s.nodes.x[i] - s.nodes.x0[i]) / right_end.size();
+  }
+  const Energies e = energies(s);
+  const double broken = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
+  row.insert(row.end(), {double(cracks.count), cracks.mean_width_m, cracks.total_width_m, cracks.mean_length_m,
+                         right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
+                         e.joint_work_J, e.fracture_J, e.external_work_J, e.gravity_work_J,
+                         double(s.mechanics.steps)});
+  return row;
 }
 
 JsonObject summary_json(const Deck& deck, const State& s, const Series& series, double wall_s,
@@ -48,33 +88,70 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   j.integer("joints", static_cast<long long>(s.joints.size()));
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
   j.integer("moisture_steps", static_cast<long long>(s.moisture_steps));
-  j.integer("mechanical_steps", 0);
+  j.integer("mechanical_steps", static_cast<long long>(s.mechanics.steps));
   j.boolean("completed", completed);
   return j;
+}
+
+// reactions.csv: per output time and [[mechanics.boundary]], the support force and the mean
+// displacement of the boundary's nodes.
+void append_reactions(std::ostringstream& csv, const State& s) {
+  for (const MechanicsBoundary& b : s.mechanics_boundaries) {
+    double ux = 0, uy = 0;
+    for (const index_t i : b.nodes) {
+      ux += (s.nodes.x[i] - s.nodes.x0[i]) / b.nodes.size();
+      uy += (s.nodes.y[i] - s.nodes.y0[i]) / b.nodes.size();
+    }
+    csv << std::setprecision(17) << s.time_s << ',' << b.name << ',' << b.reaction_x << ',' << b.reaction_y
+        << ',' << ux << ',' << uy << ',' << b.work_J << '\n';
+  }
 }
 
 }  // namespace
 
 State setup_state(const Deck& deck) {
-  refuse_unbuilt_features(deck);
   State s = build_state(load_mesh(deck), deck);
+  break_joints_along_cracks(s, deck);
   std::vector<std::uint8_t> has_moisture(s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
     has_moisture[t] = deck.materials.at(s.material_names[s.triangles.material[t]]).has_moisture();
-  if (std::none_of(has_moisture.begin(), has_moisture.end(), [](std::uint8_t h) { return h != 0; }))
+  const bool moisture = std::any_of(has_moisture.begin(), has_moisture.end(), [](std::uint8_t h) { return h != 0; });
+  if (!moisture && !deck.mechanics)
     throw InputError(deck.path + ": materials: no material of the mesh has moisture_conductivity, "
                                  "so a moisture-only run has nothing to compute");
   group_moisture_nodes(s.joints, has_moisture, s.nodes, s.moisture);
-  init_moisture(s, deck);
+  if (moisture) init_moisture(s, deck);
+  if (deck.mechanics) {
+    init_mechanics(s, deck);
+    update_shrinkage_strain(s);
+    relax(s, relaxation_controls(deck), 0.0);  // the initial equilibrium
+    commit_joint_damage(s);
+  }
   return s;
 }
 
-void advance_to(State& s, double until_s, double max_step_s) {
+double coupling_step_limit(const State& s, const Deck& deck) {
+  double step = deck.output_interval_s;
+  if (any_moisture(s)) step = std::min(step, stable_moisture_step(s, deck.moisture_safety));
+  if (deck.max_coupling_step_s > 0.0) step = std::min(step, deck.max_coupling_step_s);
+  return step;
+}
+
+void coupling_step(State& s, const Deck& deck, double dt) {
+  if (any_moisture(s)) moisture_step(s, dt);
+  if (deck.mechanics) {
+    update_shrinkage_strain(s);
+    relax(s, relaxation_controls(deck), dt);
+    commit_joint_damage(s);
+  }
+}
+
+void advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
   while (s.time_s < until_s) {
     const double remaining = until_s - s.time_s;
     // The last step lands exactly on until_s (it is never longer than a stable step).
     const bool last = remaining <= max_step_s;
-    moisture_step(s, last ? remaining : max_step_s);
+    coupling_step(s, deck, last ? remaining : max_step_s);
     s.time_s = last ? until_s : s.time_s + max_step_s;
     ++s.moisture_steps;
   }
@@ -101,30 +178,58 @@ int run(const RunOptions& opt) {
   for (std::size_t m = 0; m < material_used.size(); ++m)
     if (!material_used[m])
       log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
-  const double stable_step = stable_moisture_step(state, deck.moisture_safety);
-  // Nothing diffuses or exchanges: the state only changes through flux terms, step per frame.
-  const double max_step = std::isfinite(stable_step) ? stable_step : deck.output_interval_s;
-  log.info("moisture step " + std::to_string(max_step) + " s (safety " +
-           std::to_string(deck.moisture_safety) + " of the explicit limit); output to " + outdir);
+  const double max_step = coupling_step_limit(state, deck);
+  std::ostringstream steps;
+  steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";
+  if (deck.mechanics)
+    steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
+          << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
+          << deck.relaxation_max_steps << " steps; initial equilibrium in " << state.mechanics.steps
+          << " steps, residual " << state.mechanics.last_residual;
+  log.info(steps.str() + "; output to " + outdir);
 
   FrameSeries frames{outdir, deck.name, {}, {}};
   Series series;
+  const std::vector<index_t> right_end = deck.mechanics ? right_end_corners(state) : std::vector<index_t>{};
+  std::ostringstream reactions;
+  reactions << "time_s,boundary,reaction_x_N,reaction_y_N,mean_ux_m,mean_uy_m,work_J\n";
+  CracksCsv cracks_csv{outdir + "/cracks.csv", {}};
+  std::uint64_t capped_reported = 0;
   Progress progress;
   progress.start(deck.end_time_s, opt.quiet, opt.progress_every_s);
+  long next_frame = 0;
   const auto write_outputs = [&](bool completed) {
-    write_frame(frames, state, state.time_s);
-    series.rows.push_back(series_row(state));
+    if (state.time_s >= next_frame * deck.output_interval_s * (1.0 - 1e-12) || completed) {
+      write_frame(frames, state, state.time_s);
+      next_frame = std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12))) + 1;
+    }
+    series.rows.push_back(series_row(state, deck, right_end));
     write_series_csv(outdir + "/series.csv", series);
+    if (deck.mechanics) {
+      append_reactions(reactions, state);
+      write_file_atomically(outdir + "/reactions.csv", reactions.str());
+      append_cracks_csv(cracks_csv, state.time_s, find_cracks(state, deck.crack_width_threshold_m));
+      if (state.mechanics.capped_relaxations > capped_reported) {
+        std::ostringstream w;
+        w << state.mechanics.capped_relaxations - capped_reported << " relaxation(s) up to t = " << state.time_s
+          << " s stopped at the step cap (solver.relaxation_max_steps = " << deck.relaxation_max_steps
+          << ") above the tolerance; last residual " << state.mechanics.last_residual;
+        log.warning(w.str());
+        capped_reported = state.mechanics.capped_relaxations;
+      }
+    }
     write_file_atomically(outdir + "/summary.json",
                           summary_json(deck, state, series, progress.wall_s(), completed).dump());
   };
 
   write_outputs(false);
-  for (long frame = 1; state.time_s < deck.end_time_s; ++frame) {
-    const double next_output = std::min(deck.end_time_s, frame * deck.output_interval_s);
+  // Rows of the tables every series_interval, frames at the first row at or after each
+  // multiple of output_interval.
+  for (long row = 1; state.time_s < deck.end_time_s; ++row) {
+    const double next_output = std::min(deck.end_time_s, row * deck.series_interval_s);
     while (state.time_s < next_output) {
       // Advance in chunks so the progress line stays live on long intervals.
-      advance_to(state, std::min(next_output, state.time_s + 1000 * max_step), max_step);
+      advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
       progress.update(state.time_s, state.moisture_steps);
     }
     write_outputs(state.time_s >= deck.end_time_s);
@@ -134,7 +239,16 @@ int run(const RunOptions& opt) {
   std::ostringstream tail;
   tail << "done: t = " << state.time_s << " s, " << state.moisture_steps << " moisture steps, "
        << "mean moisture " << mean_moisture(state) << ", water balance error "
-       << water_balance_error(state) << ", wall " << progress.wall_s() << " s\n"
+       << water_balance_error(state) << ", wall " << progress.wall_s() << " s\n";
+  if (deck.mechanics) {
+    const Energies e = energies(state);
+    tail << "solid: " << state.mechanics.steps << " mechanical steps, "
+         << std::count(state.joints.broken.begin(), state.joints.broken.end(), 1) << " broken joints; energies (J): "
+         << "elastic " << e.elastic_J << ", joint work " << e.joint_work_J << " (fracture " << e.fracture_J
+         << "), external work " << e.external_work_J << ", gravity work " << e.gravity_work_J << ", kinetic "
+         << e.kinetic_J << "\n";
+  }
+  tail
        << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, summary.json, deck.toml, log.txt";
   log.info(tail.str());
   return 0;

@@ -19,13 +19,23 @@ struct RunOptions {
   double progress_every_s = 10.0;      // plain progress lines when stderr is not a terminal
 };
 
-// Everything a run needs before its first step: mesh, exploded state, moisture nodes and
-// the moisture model. Throws InputError for anything the deck asks that cannot be done.
+// Everything a run needs before its first step: mesh, exploded state, pre-existing cracks,
+// moisture nodes and model, the solid and its initial equilibrium (gravity, and shrinkage
+// when the moisture starts away from the stress-free value). Throws InputError for anything
+// the deck asks that cannot be done.
 State setup_state(const Deck& deck);
 
-// Advances the state to until_s in explicit moisture steps no longer than max_step_s,
-// landing exactly on until_s.
-void advance_to(State& state, double until_s, double max_step_s);
+// The longest step of the staggered loop: the moisture stability limit, solver.max_coupling_step
+// and the output interval, whichever is smallest.
+double coupling_step_limit(const State& state, const Deck& deck);
+
+// One step of the paper's loop (section 3.3): (1) moisture update, (2) shrinkage eigenstrain,
+// (3) mechanical relaxation to equilibrium, (4) joint breakage.
+void coupling_step(State& state, const Deck& deck, double dt);
+
+// Advances the state to until_s in coupling steps no longer than max_step_s, landing
+// exactly on until_s.
+void advance_to(State& state, const Deck& deck, double until_s, double max_step_s);
 
 // Runs a deck end to end with outputs; returns the process exit code.
 int run(const RunOptions& options);

@@ -108,6 +108,7 @@ struct MaterialModel {
   double mass_scaling = 1;     // inertial mass = mass_scaling x physical (pseudo-time only)
   double lambda = 0, mu = 0;   // in-plane Lame constants (plane stress: lambda* = E nu/(1-nu^2))
   double bulk3 = 0;            // 3 K*: isotropic stress per unit shrinkage strain (Eq. 19)
+  bool plane_strain = false;
   double young = 0;
   double shrinkage_coefficient = 0, shrinkage_limit = 0, stress_free_moisture = 0;  // Eq. 18
   double penalty = 0;          // joint penalty p, Pa
@@ -126,6 +127,11 @@ struct MechanicsBoundary {
 
 // Relaxation scratch and the solid's energy bookkeeping.
 struct Mechanics {
+  double thickness_m = 1;                 // out-of-plane
+  double gravity_x = 0, gravity_y = 0;    // m/s^2
+  // Nodes driven at a prescribed velocity (unique, ascending) and that velocity, m/s.
+  std::vector<index_t> driven_node;
+  std::vector<double> driven_vx, driven_vy;
   std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
   std::vector<double> fx_start, fy_start; // [nodes] forces then
   double step_s = 0;                      // pseudo-time step of the explicit integration

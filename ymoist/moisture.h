@@ -22,6 +22,10 @@ double stable_moisture_step(const State& state, double safety);
 // boundary is booked in state.water. No node is written by two threads.
 void moisture_step(State& state, double dt);
 
+// Each triangle's shrinkage strain eps_sh = alpha (max(w, w_s) - w_i) from the mean moisture
+// of its corners (Eq. 18); the solid turns it into the stress 3 K* eps_sh (Eq. 19).
+void update_shrinkage_strain(State& state);
+
 double total_water_kg(const State& state);
 double mean_moisture(const State& state);  // water / dry mass over all moisture nodes
 // |water now - water at start - net in| / max(water at start, water that crossed boundaries).

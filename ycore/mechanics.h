@@ -1,0 +1,62 @@
+// The FDEM solid (DESIGN section 4): constant-strain triangles with a co-rotational law,
+// cohesive joints, gravity, fixed and driven boundaries, and the quasi-static relaxation that
+// brings it to equilibrium after each step of the moisture clock.
+#pragma once
+
+#include <cstdint>
+
+#include "ycore/deck.h"
+#include "ycore/state.h"
+
+namespace ydry {
+
+// Material constants, masses, reference geometry, joint data and boundary constraints from
+// the deck; state.mechanics.step_s from the stability bound. Throws InputError for a key the
+// solid needs and the deck lacks, or for contradictory boundary conditions.
+void init_mechanics(State& state, const Deck& deck);
+
+// The largest stable step of the central-difference integration times `safety`: per node,
+// omega^2 <= (row sum of its element and joint stiffness) / mass (Gershgorin).
+double stable_mechanics_step(const State& state, double safety);
+
+// Element internal forces and gravity: overwrites fx, fy of every node (each triangle owns
+// its three nodes) and the element stress.
+void element_forces(State& state);
+
+// Joint forces into joints.force, and the work they did over the last step (velocities x
+// dt) into joints.work. Broken joints carry nothing.
+void joint_forces(State& state, double dt);
+
+struct RelaxationControls {
+  double tolerance = 1e-7;          // out-of-balance force ratio that ends it
+  std::int64_t max_steps = 200000;  // step cap
+};
+
+struct RelaxationResult {
+  std::int64_t steps = 0;
+  double residual = 0;   // ||net force on free components|| / ||element forces||
+  bool capped = false;   // stopped by the step cap
+};
+
+// One quasi-static step of the solid over `coupling_dt` seconds of the moisture clock:
+// driven nodes move by velocity x coupling_dt, then explicit central-difference steps with
+// adaptive mass-proportional damping run until the out-of-balance ratio is below the
+// tolerance. Velocities are left as displacement / coupling_dt (physical), reactions and
+// boundary and gravity work are booked.
+RelaxationResult relax(State& state, const RelaxationControls& controls, double coupling_dt);
+
+// Commits each joint point's damage (maximum over time) and breaks, for good, every joint
+// with two of its three points at D = 1. Returns the number of joints that broke.
+std::size_t commit_joint_damage(State& state);
+
+struct Energies {
+  double kinetic_J = 0;      // physical masses and velocities
+  double elastic_J = 0;      // strain energy of the triangles
+  double joint_work_J = 0;   // work done on all joints since t = 0
+  double fracture_J = 0;     // work done on the joints that broke (all of it dissipated)
+  double external_work_J = 0;  // through fixed and driven boundaries
+  double gravity_work_J = 0;
+};
+Energies energies(const State& state);
+
+}  // namespace ydry

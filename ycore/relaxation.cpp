@@ -1,0 +1,201 @@
+// Quasi-static relaxation of the solid (DESIGN section 4, step 3 of the coupling loop).
+//
+// Explicit central differences in pseudo-time with mass-proportional damping c = 2 omega,
+// omega^2 the Rayleigh quotient -u.(f(x) - f(x_start)) / u.M u of the displacement u since
+// the relaxation began: for a linear solid this is the quotient of the current deflection
+// shape, which tends to the lowest mode that the load excites, so the damping tends to
+// critical for it (Underwood's adaptive dynamic relaxation). Only the equilibrium reached
+// means anything; the path in pseudo-time does not.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ycore/blocked_sum.h"
+#include "ycore/joint_law.h"
+#include "ycore/mechanics.h"
+
+namespace ydry {
+namespace {
+
+struct ForceMeasures {
+  double net2 = 0;       // |net force|^2 over free components
+  double reference2 = 0; // |element forces and gravity|^2 over all nodes
+  double rayleigh_numerator = 0, rayleigh_denominator = 0;
+  // Out-of-balance ratio. The reference never falls below floor2, the force of a strain of
+  // 1e-8 on every node, so that an unloaded solid counts as balanced instead of chasing
+  // round-off.
+  double ratio(double floor2) const { return std::sqrt(net2 / std::max(reference2, floor2)); }
+};
+
+double reference_floor2(const State& s) {
+  double young = 0.0, length = 0.0;
+  for (const MaterialModel& m : s.materials) young = std::max(young, m.young);
+  for (const double h0 : s.joints.length0) length += h0 / double(s.joints.size());
+  if (s.joints.size() == 0) length = std::sqrt(s.triangles.area0.empty() ? 0.0 : s.triangles.area0[0]);
+  const double f = 1e-8 * young * length * s.mechanics.thickness_m;
+  return f * f * double(s.nodes.size());
+}
+
+// Adds the joint forces to the node forces (through each node's joint slots) and measures.
+ForceMeasures gather_joint_forces(State& s) {
+  Nodes& n = s.nodes;
+  const Mechanics& mech = s.mechanics;
+  const std::vector<double>& jf = s.joints.force;
+  const auto sums = blocked_sum<4>(n.size(), [&](std::size_t i, std::array<double, 4>& sum) {
+    double fx = n.fx[i], fy = n.fy[i];
+    sum[1] += fx * fx + fy * fy;
+    for (int k = 0; k < 2; ++k) {
+      const index_t slot = n.joint_slot[2 * i + k];
+      if (slot == kNoIndex) continue;
+      fx += jf[2 * std::size_t(slot)];
+      fy += jf[2 * std::size_t(slot) + 1];
+    }
+    n.fx[i] = fx;
+    n.fy[i] = fy;
+    if (!(n.constraint[i] & kFixX)) {
+      const double u = n.x[i] - mech.x_start[i];
+      sum[0] += fx * fx;
+      sum[2] -= u * (fx - mech.fx_start[i]);
+      sum[3] += n.m[i] * u * u;
+    }
+    if (!(n.constraint[i] & kFixY)) {
+      const double u = n.y[i] - mech.y_start[i];
+      sum[0] += fy * fy;
+      sum[2] -= u * (fy - mech.fy_start[i]);
+      sum[3] += n.m[i] * u * u;
+    }
+  });
+  return {sums[0], sums[1], sums[2], sums[3]};
+}
+
+ForceMeasures compute_forces(State& s, double dt) {
+  element_forces(s);
+  joint_forces(s, dt);
+  return gather_joint_forces(s);
+}
+
+// v += dt f / m with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)), x += v dt.
+void integrate_nodes(State& s, double damping, double dt) {
+  Nodes& n = s.nodes;
+  const double keep = 1.0 - 0.5 * damping * dt, scale = 1.0 / (1.0 + 0.5 * damping * dt);
+  const std::int64_t nn = std::int64_t(n.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < nn; ++i) {
+    if (!(n.constraint[i] & kFixX)) {
+      n.vx[i] = (keep * n.vx[i] + dt * n.fx[i] / n.m[i]) * scale;
+      n.x[i] += n.vx[i] * dt;
+    }
+    if (!(n.constraint[i] & kFixY)) {
+      n.vy[i] = (keep * n.vy[i] + dt * n.fy[i] / n.m[i]) * scale;
+      n.y[i] += n.vy[i] * dt;
+    }
+  }
+}
+
+// Moves the driven nodes by velocity x coupling_dt and books the work of each boundary over
+// that jump (trapezoid of the reactions before and right after it).
+void move_driven_nodes(State& s, double coupling_dt, double dt) {
+  Nodes& n = s.nodes;
+  const Mechanics& mech = s.mechanics;
+  for (std::size_t k = 0; k < mech.driven_node.size(); ++k) {
+    const index_t i = mech.driven_node[k];
+    n.x[i] += mech.driven_vx[k] * coupling_dt;
+    n.y[i] += mech.driven_vy[k] * coupling_dt;
+    // Seen as a velocity by one joint-force evaluation, so the joints book the jump's work.
+    n.vx[i] = mech.driven_vx[k] * coupling_dt / dt;
+    n.vy[i] = mech.driven_vy[k] * coupling_dt / dt;
+  }
+}
+
+// Reactions: the force each support exerts, -(net internal force), summed per boundary.
+void update_reactions(State& s, bool book_jump_work, double coupling_dt) {
+  const Nodes& n = s.nodes;
+  for (MechanicsBoundary& b : s.mechanics_boundaries) {
+    double rx = 0, ry = 0;
+    for (const index_t i : b.nodes) {
+      if (b.fix_x) rx -= n.fx[i];
+      if (b.fix_y) ry -= n.fy[i];
+    }
+    if (book_jump_work)
+      b.work_J += 0.5 * ((b.reaction_x + rx) * b.vx + (b.reaction_y + ry) * b.vy) * coupling_dt;
+    b.reaction_x = rx;
+    b.reaction_y = ry;
+  }
+}
+
+}  // namespace
+
+RelaxationResult relax(State& s, const RelaxationControls& controls, double coupling_dt) {
+  Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  const double dt = mech.step_s;
+  const std::int64_t nn = std::int64_t(n.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < nn; ++i) {
+    n.vx[i] = n.vy[i] = 0.0;  // quasi-static: every relaxation starts at rest
+    mech.x_start[i] = n.x[i];
+    mech.y_start[i] = n.y[i];
+  }
+  move_driven_nodes(s, coupling_dt, dt);
+  ForceMeasures measures = compute_forces(s, dt);
+  update_reactions(s, true, coupling_dt);
+  for (const index_t i : mech.driven_node) n.vx[i] = n.vy[i] = 0.0;
+  mech.fx_start = n.fx;
+  mech.fy_start = n.fy;
+
+  RelaxationResult result;
+  const double floor2 = reference_floor2(s);
+  result.residual = measures.ratio(floor2);
+  double damping = 0.0;
+  while (result.residual > controls.tolerance && result.steps < controls.max_steps) {
+    integrate_nodes(s, damping, dt);
+    measures = compute_forces(s, dt);
+    ++result.steps;
+    if (measures.rayleigh_numerator > 0.0 && measures.rayleigh_denominator > 0.0)
+      damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / measures.rayleigh_denominator), 2.0 / dt);
+    result.residual = measures.ratio(floor2);
+  }
+  result.capped = result.residual > controls.tolerance;
+  update_reactions(s, false, coupling_dt);
+
+  const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
+    const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
+    sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
+  });
+  mech.gravity_work_J += gravity[0];
+  const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < nn; ++i) {
+    n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
+    n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;
+  }
+  mech.steps += std::uint64_t(result.steps);
+  mech.last_residual = result.residual;
+  if (result.capped) ++mech.capped_relaxations;
+  return result;
+}
+
+std::size_t commit_joint_damage(State& s) {
+  Joints& jt = s.joints;
+  const auto broke = blocked_sum<1>(jt.size(), [&](std::size_t j, std::array<double, 1>& sum) {
+    const MaterialModel& m = s.materials[jt.material[j]];
+    if (jt.broken[j] || !m.mechanical || !m.breakable) return;
+    const JointKinematics k = joint_kinematics(s.nodes, &jt.node[4 * j]);
+    constexpr double share0[3] = {1.0, 0.5, 0.0};
+    int failed = 0;
+    for (int p = 0; p < 3; ++p) {
+      const double a = share0[p], b = 1.0 - a;
+      double& d = jt.damage[3 * j + p];
+      d = std::max(d, cohesive_traction(m, jt.length0[j], a * k.opening[0] + b * k.opening[1],
+                                        a * k.slip[0] + b * k.slip[1], d).damage);
+      failed += d >= 1.0;
+    }
+    if (failed >= 2) {
+      jt.broken[j] = 1;
+      sum[0] += 1.0;
+    }
+  });
+  return std::size_t(broke[0]);
+}
+
+}  // namespace ydry

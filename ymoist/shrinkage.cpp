@@ -1,0 +1,22 @@
+// Shrinkage eigenstrain from moisture (Eqs. 18-19).
+#include <algorithm>
+
+#include "ymoist/moisture.h"
+
+namespace ydry {
+
+void update_shrinkage_strain(State& s) {
+  const std::int64_t nt = std::int64_t(s.triangles.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nt; ++t) {
+    const MaterialModel& m = s.materials[s.triangles.material[t]];
+    const index_t i = corner_node(index_t(t), 0);
+    if (!m.mechanical || s.nodes.mnode[i] == kNoIndex) continue;
+    double w = 0.0;  // element moisture: the mean of its corners'
+    for (int a = 0; a < 3; ++a) w += s.moisture.w[s.nodes.mnode[i + a]] / 3.0;
+    // Eq. 18: proportional to the moisture change, no further below the shrinkage limit.
+    s.triangles.shrinkage_strain[t] = m.shrinkage_coefficient * (std::max(w, m.shrinkage_limit) - m.stress_free_moisture);
+  }
+}
+
+}  // namespace ydry
