@@ -1,11 +1,12 @@
 // Quasi-static relaxation of the solid (DESIGN section 4, step 3 of the coupling loop).
 //
 // Explicit central differences in pseudo-time with mass-proportional damping c = 2 omega,
-// omega^2 the Rayleigh quotient -u.(f(x) - f(x_start)) / u.M u of the displacement u since
-// the relaxation began: for a linear solid this is the quotient of the current deflection
-// shape, which tends to the lowest mode that the load excites, so the damping tends to
-// critical for it (Underwood's adaptive dynamic relaxation). Only the equilibrium reached
-// means anything; the path in pseudo-time does not.
+// omega^2 the Rayleigh quotient -v.(f_new - f_old) / (dt v.M v) of the last step's motion
+// (Underwood's adaptive dynamic relaxation, with the step's velocity in place of the total
+// displacement: a boundary that moved the solid rigidly does not fool it into no damping).
+// As the fast modes die out the motion is that of the slowest mode the load excites, and the
+// damping tends to critical for it. Only the equilibrium reached means anything; the path
+// in pseudo-time does not.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,25 +22,26 @@ struct ForceMeasures {
   double net2 = 0;       // |net force|^2 over free components
   double reference2 = 0; // |element forces and gravity|^2 over all nodes
   double rayleigh_numerator = 0, rayleigh_denominator = 0;
-  // Out-of-balance ratio. The reference never falls below floor2, the force of a strain of
-  // 1e-8 on every node, so that an unloaded solid counts as balanced instead of chasing
-  // round-off.
-  double ratio(double floor2) const { return std::sqrt(net2 / std::max(reference2, floor2)); }
+  double ratio() const { return reference2 > 0.0 ? std::sqrt(net2 / reference2) : (net2 > 0.0 ? INFINITY : 0.0); }
 };
 
-double reference_floor2(const State& s) {
-  double young = 0.0, length = 0.0;
-  for (const MaterialModel& m : s.materials) young = std::max(young, m.young);
-  for (const double h0 : s.joints.length0) length += h0 / double(s.joints.size());
-  if (s.joints.size() == 0) length = std::sqrt(s.triangles.area0.empty() ? 0.0 : s.triangles.area0[0]);
-  const double f = 1e-8 * young * length * s.mechanics.thickness_m;
-  return f * f * double(s.nodes.size());
+// |net force|^2 that round-off alone produces: coordinates of size L carry an error of
+// eps L, which a joint of penalty p turns into a force of about p t eps L per node. A
+// relaxation also ends when the out-of-balance is within 100 times that, so an unloaded or
+// fully broken solid does not chase round-off.
+double roundoff_net2(const State& s) {
+  double penalty = 0.0, extent = 0.0;
+  for (const MaterialModel& m : s.materials) penalty = std::max({penalty, m.penalty, m.young});
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    extent = std::max({extent, std::fabs(s.nodes.x0[i]), std::fabs(s.nodes.y0[i])});
+  const double force = 100.0 * penalty * s.mechanics.thickness_m * std::numeric_limits<double>::epsilon() * extent;
+  return force * force * double(s.nodes.size());
 }
 
 // Adds the joint forces to the node forces (through each node's joint slots) and measures.
 ForceMeasures gather_joint_forces(State& s) {
   Nodes& n = s.nodes;
-  const Mechanics& mech = s.mechanics;
+  Mechanics& mech = s.mechanics;
   const std::vector<double>& jf = s.joints.force;
   const auto sums = blocked_sum<4>(n.size(), [&](std::size_t i, std::array<double, 4>& sum) {
     double fx = n.fx[i], fy = n.fy[i];
@@ -53,17 +55,19 @@ ForceMeasures gather_joint_forces(State& s) {
     n.fx[i] = fx;
     n.fy[i] = fy;
     if (!(n.constraint[i] & kFixX)) {
-      const double u = n.x[i] - mech.x_start[i];
+      const double u = n.vx[i];
       sum[0] += fx * fx;
-      sum[2] -= u * (fx - mech.fx_start[i]);
+      sum[2] -= u * (fx - mech.fx_previous[i]);
       sum[3] += n.m[i] * u * u;
     }
     if (!(n.constraint[i] & kFixY)) {
-      const double u = n.y[i] - mech.y_start[i];
+      const double u = n.vy[i];
       sum[0] += fy * fy;
-      sum[2] -= u * (fy - mech.fy_start[i]);
+      sum[2] -= u * (fy - mech.fy_previous[i]);
       sum[3] += n.m[i] * u * u;
     }
+    mech.fx_previous[i] = fx;
+    mech.fy_previous[i] = fy;
   });
   return {sums[0], sums[1], sums[2], sums[3]};
 }
@@ -140,22 +144,25 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   ForceMeasures measures = compute_forces(s, dt);
   update_reactions(s, true, coupling_dt);
   for (const index_t i : mech.driven_node) n.vx[i] = n.vy[i] = 0.0;
-  mech.fx_start = n.fx;
-  mech.fy_start = n.fy;
+  mech.fx_previous = n.fx;
+  mech.fy_previous = n.fy;
 
   RelaxationResult result;
-  const double floor2 = reference_floor2(s);
-  result.residual = measures.ratio(floor2);
+  const double roundoff2 = roundoff_net2(s);
+  const auto balanced = [&](const ForceMeasures& m) {
+    return m.net2 <= roundoff2 || m.ratio() <= controls.tolerance;
+  };
+  result.residual = measures.ratio();
   double damping = 0.0;
-  while (result.residual > controls.tolerance && result.steps < controls.max_steps) {
+  while (!balanced(measures) && result.steps < controls.max_steps) {
     integrate_nodes(s, damping, dt);
     measures = compute_forces(s, dt);
     ++result.steps;
     if (measures.rayleigh_numerator > 0.0 && measures.rayleigh_denominator > 0.0)
-      damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / measures.rayleigh_denominator), 2.0 / dt);
-    result.residual = measures.ratio(floor2);
+      damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / (dt * measures.rayleigh_denominator)), 2.0 / dt);
+    result.residual = measures.ratio();
   }
-  result.capped = result.residual > controls.tolerance;
+  result.capped = !balanced(measures);
   update_reactions(s, false, coupling_dt);
 
   const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {

@@ -133,7 +133,7 @@ struct Mechanics {
   std::vector<index_t> driven_node;
   std::vector<double> driven_vx, driven_vy;
   std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
-  std::vector<double> fx_start, fy_start; // [nodes] forces then
+  std::vector<double> fx_previous, fy_previous;  // [nodes] forces one step ago
   double step_s = 0;                      // pseudo-time step of the explicit integration
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
