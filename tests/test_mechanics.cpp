@@ -1,0 +1,242 @@
+// The solid: co-rotational triangles, cohesive joints, the stable step, momentum, and a bar
+// under its own weight against its linear-elastic answer.
+#include <catch2/catch.hpp>
+#include <omp.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+
+#include "tests/test_support.h"
+#include "ycore/joint_law.h"
+#include "ycore/mechanics.h"
+#include "ycore/run.h"
+
+using namespace ydry;
+
+namespace {
+
+constexpr double kYoung = 1.0e6, kDensity = 1000.0;
+
+// A free-standing block of breakable soil, no gravity, no boundaries, 1 mm cells.
+Deck block_deck(ydry_test::TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {}) {
+  ydry_test::write_text(dir.file("block.toml"), R"(
+[run]
+name = "block"
+end_time = 1.0
+output_interval = 1.0
+gravity = [0.0, 0.0]
+[mesh]
+generator = "rectangle"
+size = [0.004, 0.003]
+element_size = 0.001
+pattern = ")" + pattern + R"("
+material = "soil"
+[materials.soil]
+density = 1000.0
+young = 1.0e6
+poisson = 0.25
+tensile_strength = 1.0e4
+cohesion = 2.0e4
+friction_angle = 30.0
+gf_I = 1.0
+gf_II = 3.0
+)");
+  return load_deck(dir.file("block.toml"), sets);
+}
+
+// Net nodal forces: elements and gravity, then the joints through each node's slots.
+void net_forces(State& s) {
+  element_forces(s);
+  joint_forces(s, 0.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    for (int k = 0; k < 2; ++k) {
+      const index_t slot = s.nodes.joint_slot[2 * i + k];
+      if (slot == kNoIndex) continue;
+      s.nodes.fx[i] += s.joints.force[2 * std::size_t(slot)];
+      s.nodes.fy[i] += s.joints.force[2 * std::size_t(slot) + 1];
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a rigid rotation of a triangle by 90 degrees gives zero stress and force", "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(block_deck(dir, "right"));
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {  // (x, y) -> (-y, x) about the origin
+    s.nodes.x[i] = -s.nodes.y0[i];
+    s.nodes.y[i] = s.nodes.x0[i];
+  }
+  net_forces(s);
+  const double stress_scale = kYoung * 1e-12, force_scale = kYoung * 1e-3 * 1e-12;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    CHECK(std::fabs(s.triangles.sxx[t]) < stress_scale);
+    CHECK(std::fabs(s.triangles.syy[t]) < stress_scale);
+    CHECK(std::fabs(s.triangles.sxy[t]) < stress_scale);
+  }
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) CHECK(std::hypot(s.nodes.fx[i], s.nodes.fy[i]) < force_scale);
+}
+
+TEST_CASE("patch test: a uniform strain gives the Hooke stress in every triangle, balanced at interior vertices", "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(block_deck(dir, "cross"));
+  const double exx = 1e-4, eyy = -3e-5, exy = 2e-5;  // small, so the co-rotational law is Hooke's
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    s.nodes.x[i] = s.nodes.x0[i] + exx * s.nodes.x0[i] + exy * s.nodes.y0[i];
+    s.nodes.y[i] = s.nodes.y0[i] + exy * s.nodes.x0[i] + eyy * s.nodes.y0[i];
+  }
+  net_forces(s);
+  const double nu = 0.25, c = kYoung / (1 - nu * nu);  // plane stress
+  const double sxx = c * (exx + nu * eyy), syy = c * (eyy + nu * exx), sxy = kYoung / (1 + nu) * exy;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    CHECK(s.triangles.sxx[t] == Approx(sxx).epsilon(1e-3));
+    CHECK(s.triangles.syy[t] == Approx(syy).epsilon(1e-3));
+    CHECK(s.triangles.sxy[t] == Approx(sxy).epsilon(1e-3));
+  }
+  // Interior vertices: the corners' forces sum to zero (the joints carry nothing here).
+  std::vector<double> fx(s.nodes.size(), 0.0), fy(s.nodes.size(), 0.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) fx[s.nodes.vertex[i]] += s.nodes.fx[i], fy[s.nodes.vertex[i]] += s.nodes.fy[i];
+  const double scale = std::fabs(sxx) * 1e-3;  // stress x element size x thickness
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    const bool interior = s.nodes.x0[i] > 1e-9 && s.nodes.x0[i] < 0.004 - 1e-9 && s.nodes.y0[i] > 1e-9 && s.nodes.y0[i] < 0.003 - 1e-9;
+    if (interior) CHECK(std::hypot(fx[s.nodes.vertex[i]], fy[s.nodes.vertex[i]]) < 1e-9 * scale);
+  }
+}
+
+TEST_CASE("a joint's traction-opening curve integrates to gf_I, and traction-slip to gf_II", "[mechanics]") {
+  MaterialModel m;
+  m.mechanical = true;
+  m.penalty = 1000 * kYoung;
+  m.tensile_strength = 1e4;
+  m.cohesion = 2e4;
+  m.tan_friction = std::tan(30.0 * M_PI / 180.0);
+  m.gf_I = 1.0;
+  m.gf_II = 3.0;
+  const double h0 = 1e-3;
+  for (const bool shear : {false, true}) {
+    const double strength = shear ? m.cohesion : m.tensile_strength, gf = shear ? m.gf_II : m.gf_I;
+    const double end = 1.2 * gf / (softening_curve_area() * strength);
+    const int n = 400000;
+    double damage = 0, work = 0, peak = 0, previous = 0;
+    for (int k = 1; k <= n; ++k) {  // monotonic loading, trapezoid rule
+      const double d = end * k / n;
+      const PointTraction t = cohesive_traction(m, h0, shear ? 0.0 : d, shear ? d : 0.0, damage);
+      damage = std::max(damage, t.damage);
+      const double traction = shear ? t.shear : t.normal;
+      work += 0.5 * (traction + previous) * end / n;
+      previous = traction;
+      peak = std::max(peak, traction);
+    }
+    INFO((shear ? "mode II" : "mode I"));
+    CHECK(peak == Approx(strength).epsilon(1e-6));
+    CHECK(work == Approx(gf).epsilon(1e-4));
+    CHECK(damage == 1.0);
+    CHECK(previous == 0.0);
+  }
+}
+
+TEST_CASE("element and joint forces conserve linear and angular momentum, broken or not", "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(block_deck(dir, "left"));
+  std::mt19937 rng(3);
+  std::normal_distribution<double> jitter(0.0, 2e-5);  // openings into the softening range
+  const double angle = 0.3;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    const double x = s.nodes.x0[i] + jitter(rng), y = s.nodes.y0[i] + jitter(rng);
+    s.nodes.x[i] = std::cos(angle) * x - std::sin(angle) * y;
+    s.nodes.y[i] = std::sin(angle) * x + std::cos(angle) * y;
+  }
+  for (std::size_t j = 0; j < s.joints.size(); j += 5) s.joints.broken[j] = 1;
+  net_forces(s);
+  double fx = 0, fy = 0, torque = 0, scale = 0;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    fx += s.nodes.fx[i];
+    fy += s.nodes.fy[i];
+    torque += s.nodes.x[i] * s.nodes.fy[i] - s.nodes.y[i] * s.nodes.fx[i];
+    scale += std::hypot(s.nodes.fx[i], s.nodes.fy[i]);
+  }
+  REQUIRE(scale > 1.0);  // the jitter loads the solid well beyond round-off
+  CHECK(std::fabs(fx) < 1e-12 * scale);
+  CHECK(std::fabs(fy) < 1e-12 * scale);
+  CHECK(std::fabs(torque) < 1e-12 * scale * 0.005);  // lever arm: the block's size
+}
+
+TEST_CASE("the stable step is below 2 / omega_max of the linearised solid and within a factor 3 of it", "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(block_deck(dir, "right"));
+  const std::size_t nn = s.nodes.size();
+  const double step = stable_mechanics_step(s, 1.0);
+  // Stiffness by central differences of the net forces, mass-normalised: M^-1/2 K M^-1/2.
+  Eigen::MatrixXd k(2 * nn, 2 * nn);
+  const double h = 1e-10;
+  for (std::size_t c = 0; c < 2 * nn; ++c) {
+    double& coordinate = c % 2 ? s.nodes.y[c / 2] : s.nodes.x[c / 2];
+    Eigen::VectorXd plus(2 * nn), minus(2 * nn);
+    for (auto* f : {&plus, &minus}) {
+      coordinate += f == &plus ? h : -2 * h;
+      net_forces(s);
+      for (std::size_t i = 0; i < nn; ++i) (*f)[2 * i] = s.nodes.fx[i], (*f)[2 * i + 1] = s.nodes.fy[i];
+    }
+    coordinate += h;
+    k.col(c) = -(plus - minus) / (2 * h);
+  }
+  for (std::size_t r = 0; r < 2 * nn; ++r)
+    for (std::size_t c = 0; c < 2 * nn; ++c) k(r, c) /= std::sqrt(s.nodes.m[r / 2] * s.nodes.m[c / 2]);
+  const Eigen::MatrixXd symmetric = 0.5 * (k + k.transpose());
+  const double omega_max = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(symmetric).eigenvalues().maxCoeff());
+  CHECK(step <= 2.0 / omega_max);
+  CHECK(step >= 2.0 / omega_max / 3.0);
+}
+
+TEST_CASE("a column hanging under its own weight stretches by rho g H^2 / 2E within 1 %", "[mechanics]") {
+  ydry_test::TempDir dir;
+  const double height = 0.1, g = 10.0;
+  State s = setup_state(block_deck(dir, "cross",
+                                   {"mesh.size=[0.01,0.1]", "mesh.element_size=0.0025", "materials.soil.poisson=0.0",
+                                    "materials.soil.breakable=false", "run.gravity=[0.0,-10.0]",
+                                    "mechanics.boundary=[{on=\"top\",fix=[\"x\",\"y\"]}]"}));
+  double tip = 0;
+  int corners = 0;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    if (s.nodes.y0[i] < 1e-12) tip += s.nodes.y[i] - s.nodes.y0[i], ++corners;
+  tip /= corners;
+  CHECK(tip == Approx(-kDensity * g * height * height / (2 * kYoung)).epsilon(0.01));
+}
+
+TEST_CASE("the solid's equilibrium is bitwise the same on 1 and 2 threads", "[mechanics][threads]") {
+  ydry_test::TempDir dir;
+  const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/shrinkage/shrinkage.toml", {"mesh.element_size=0.005"});
+  std::vector<double> x[2];
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    x[threads - 1] = setup_state(deck).nodes.x;
+  }
+  omp_set_num_threads(2);
+  CHECK(x[0] == x[1]);
+}
+
+TEST_CASE("shrinkage results do not depend on the relaxation controls or the mass scaling", "[mechanics]") {
+  // The paper 4.3 block on a 5 mm mesh: the top reaction (sigma_y) and the shortening.
+  const auto figures = [](const std::vector<std::string>& sets) {
+    std::vector<std::string> all = {"mesh.element_size=0.005"};
+    all.insert(all.end(), sets.begin(), sets.end());
+    const State s = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/shrinkage/shrinkage.toml", all));
+    double left = 0, right = 0;
+    int nl = 0, nr = 0;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+      if (s.nodes.x0[i] < 1e-12) left += s.nodes.x[i] - s.nodes.x0[i], ++nl;
+      if (s.nodes.x0[i] > 0.1 - 1e-12) right += s.nodes.x[i] - s.nodes.x0[i], ++nr;
+    }
+    return std::pair<double, double>{s.mechanics_boundaries[1].reaction_y, left / nl - right / nr};
+  };
+  const auto base = figures({});
+  CHECK(base.first / 0.1 == Approx(20000.0).epsilon(0.005));
+  CHECK(base.second == Approx(2.4e-3).epsilon(0.005));
+  for (const char* set : {"solver.relaxation_max_steps=400000", "solver.relaxation_tolerance=5e-8",
+                          "materials.soil.mass_scaling=4.0"}) {
+    INFO(set);
+    const auto varied = figures({set});
+    CHECK(varied.first == Approx(base.first).epsilon(1e-3));
+    CHECK(varied.second == Approx(base.second).epsilon(1e-3));
+  }
+}
