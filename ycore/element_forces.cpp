@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "ycore/corotational.h"
+#include "ycore/blocked_sum.h"
 #include "ycore/mechanics.h"
 
 namespace ydry {
@@ -20,7 +21,7 @@ void element_forces(State& s) {
   const double thickness = s.mechanics.thickness_m;
   const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
   const std::int64_t nt = std::int64_t(tri.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (std::size_t(nt) > kParallelMinimum)
   for (std::int64_t e = 0; e < nt; ++e) {
     const MaterialModel& m = s.materials[tri.material[e]];
     const index_t i = corner_node(index_t(e), 0);

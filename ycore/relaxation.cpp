@@ -83,7 +83,7 @@ void integrate_nodes(State& s, double damping, double dt) {
   Nodes& n = s.nodes;
   const double keep = 1.0 - 0.5 * damping * dt, scale = 1.0 / (1.0 + 0.5 * damping * dt);
   const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     if (!(n.constraint[i] & kFixX)) {
       n.vx[i] = (keep * n.vx[i] + dt * n.fx[i] / n.m[i]) * scale;
@@ -134,7 +134,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
   const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     n.vx[i] = n.vy[i] = 0.0;  // quasi-static: every relaxation starts at rest
     mech.x_start[i] = n.x[i];
@@ -171,7 +171,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   });
   mech.gravity_work_J += gravity[0];
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
     n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;

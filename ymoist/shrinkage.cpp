@@ -1,13 +1,14 @@
 // Shrinkage eigenstrain from moisture (Eqs. 18-19).
 #include <algorithm>
 
+#include "ycore/blocked_sum.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {
 
 void update_shrinkage_strain(State& s) {
   const std::int64_t nt = std::int64_t(s.triangles.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (std::size_t(nt) > kParallelMinimum)
   for (std::int64_t t = 0; t < nt; ++t) {
     const MaterialModel& m = s.materials[s.triangles.material[t]];
     const index_t i = corner_node(index_t(t), 0);
