@@ -11,9 +11,12 @@
 namespace ydry {
 
 constexpr std::size_t kReductionBlock = 4096;
-// Loops shorter than this run on one thread: starting a team costs more than they do, and
-// on an oversubscribed machine (tests in parallel) spinning teams of tiny loops crawl.
-constexpr std::size_t kParallelMinimum = 1024;
+// Loops shorter than this run on one thread. A relaxation step is four short loops, each
+// ending in a barrier; below some 10^4 items the barriers cost more than the threads save,
+// and on a busy machine a barrier waiting for a descheduled thread costs a whole time slice.
+// A variable, not a constant, so that the thread-invariance tests can run small meshes in
+// parallel.
+inline std::size_t parallel_minimum = 16384;
 
 // Runs body(i, sums) for every i in [0, n), where body adds its terms into sums (K of them),
 // and returns the K totals.
@@ -21,7 +24,7 @@ template <std::size_t K, class Body>
 std::array<double, K> blocked_sum(std::size_t n, Body body) {
   const std::size_t blocks = (n + kReductionBlock - 1) / kReductionBlock;
   std::vector<std::array<double, K>> partial(blocks);
-#pragma omp parallel for schedule(static) if (blocks > 1)
+#pragma omp parallel for schedule(static) if (n > parallel_minimum)
   for (std::size_t b = 0; b < blocks; ++b) {
     std::array<double, K> sums{};
     const std::size_t end = std::min(n, (b + 1) * kReductionBlock);

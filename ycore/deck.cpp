@@ -184,6 +184,7 @@ void read_contact(TableReader r, Deck& d, const Origin& file) {
 void read_solver(TableReader r, Deck& d) {
   d.moisture_safety = r.number("moisture_safety", Range{0, 1, true, false}, 0.9);
   d.max_coupling_step_s = r.number("max_coupling_step", kNonNegative, 0.0);
+  d.mechanics_interval_s = r.number("mechanics_interval", kNonNegative, 0.0);
   d.joint_penalty = r.number("joint_penalty", kPositive, 1000.0);
   d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.8);
   d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);

@@ -100,6 +100,7 @@ struct Deck {
   // [solver]
   double moisture_safety = 0.9;  // fraction of the explicit stability limit
   double max_coupling_step_s = 0;     // upper bound of the staggered step; 0: none
+  double mechanics_interval_s = 0;    // moisture time between relaxations; 0: every step
   double joint_penalty = 1000.0;      // joint penalty p / E
   double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation

@@ -20,7 +20,7 @@ void joint_forces(State& s, double dt) {
   constexpr double weight[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
   constexpr double share0[3] = {1.0, 0.5, 0.0};  // interpolation weight of end 0 (nodes 0, 3)
   const std::int64_t nj = std::int64_t(jt.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nj) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nj) > parallel_minimum)
   for (std::int64_t j = 0; j < nj; ++j) {
     double* f = &jt.force[8 * j];  // x, y of nodes 0..3
     const MaterialModel& m = s.materials[jt.material[j]];

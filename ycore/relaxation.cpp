@@ -27,14 +27,14 @@ struct ForceMeasures {
 
 // |net force|^2 that round-off alone produces: coordinates of size L carry an error of
 // eps L, which a joint of penalty p turns into a force of about p t eps L per node. A
-// relaxation also ends when the out-of-balance is within 100 times that, so an unloaded or
+// relaxation also ends when the out-of-balance is within 10 times that, so an unloaded or
 // fully broken solid does not chase round-off.
 double roundoff_net2(const State& s) {
   double penalty = 0.0, extent = 0.0;
   for (const MaterialModel& m : s.materials) penalty = std::max({penalty, m.penalty, m.young});
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     extent = std::max({extent, std::fabs(s.nodes.x0[i]), std::fabs(s.nodes.y0[i])});
-  const double force = 100.0 * penalty * s.mechanics.thickness_m * std::numeric_limits<double>::epsilon() * extent;
+  const double force = 10.0 * penalty * s.mechanics.thickness_m * std::numeric_limits<double>::epsilon() * extent;
   return force * force * double(s.nodes.size());
 }
 
@@ -83,7 +83,7 @@ void integrate_nodes(State& s, double damping, double dt) {
   Nodes& n = s.nodes;
   const double keep = 1.0 - 0.5 * damping * dt, scale = 1.0 / (1.0 + 0.5 * damping * dt);
   const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     if (!(n.constraint[i] & kFixX)) {
       n.vx[i] = (keep * n.vx[i] + dt * n.fx[i] / n.m[i]) * scale;
@@ -96,8 +96,7 @@ void integrate_nodes(State& s, double damping, double dt) {
   }
 }
 
-// Moves the driven nodes by velocity x coupling_dt and books the work of each boundary over
-// that jump (trapezoid of the reactions before and right after it).
+// Moves the driven nodes by velocity x coupling_dt.
 void move_driven_nodes(State& s, double coupling_dt, double dt) {
   Nodes& n = s.nodes;
   const Mechanics& mech = s.mechanics;
@@ -111,8 +110,12 @@ void move_driven_nodes(State& s, double coupling_dt, double dt) {
   }
 }
 
-// Reactions: the force each support exerts, -(net internal force), summed per boundary.
-void update_reactions(State& s, bool book_jump_work, double coupling_dt) {
+// Reactions: the force each support exerts, -(net internal force), summed per boundary, and
+// the work done through each boundary since the last equilibrium: the trapezoid of the
+// reactions at the two equilibria times the boundary's displacement (the quasi-static
+// external work, exact for a linear solid; what the damping takes out of the jump between
+// them is not work done on the solid's equilibrium path).
+void update_reactions(State& s, double coupling_dt) {
   const Nodes& n = s.nodes;
   for (MechanicsBoundary& b : s.mechanics_boundaries) {
     double rx = 0, ry = 0;
@@ -120,8 +123,7 @@ void update_reactions(State& s, bool book_jump_work, double coupling_dt) {
       if (b.fix_x) rx -= n.fx[i];
       if (b.fix_y) ry -= n.fy[i];
     }
-    if (book_jump_work)
-      b.work_J += 0.5 * ((b.reaction_x + rx) * b.vx + (b.reaction_y + ry) * b.vy) * coupling_dt;
+    b.work_J += 0.5 * ((b.reaction_x + rx) * b.vx + (b.reaction_y + ry) * b.vy) * coupling_dt;
     b.reaction_x = rx;
     b.reaction_y = ry;
   }
@@ -134,7 +136,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
   const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     n.vx[i] = n.vy[i] = 0.0;  // quasi-static: every relaxation starts at rest
     mech.x_start[i] = n.x[i];
@@ -142,7 +144,6 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   }
   move_driven_nodes(s, coupling_dt, dt);
   ForceMeasures measures = compute_forces(s, dt);
-  update_reactions(s, true, coupling_dt);
   for (const index_t i : mech.driven_node) n.vx[i] = n.vy[i] = 0.0;
   mech.fx_previous = n.fx;
   mech.fy_previous = n.fy;
@@ -163,7 +164,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     result.residual = measures.ratio();
   }
   result.capped = !balanced(measures);
-  update_reactions(s, false, coupling_dt);
+  update_reactions(s, coupling_dt);
 
   const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
     const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
@@ -171,7 +172,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   });
   mech.gravity_work_J += gravity[0];
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
     n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;

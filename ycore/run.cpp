@@ -137,21 +137,24 @@ double coupling_step_limit(const State& s, const Deck& deck) {
   return step;
 }
 
-void coupling_step(State& s, const Deck& deck, double dt) {
+void coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   if (any_moisture(s)) moisture_step(s, dt);
-  if (deck.mechanics) {
-    update_shrinkage_strain(s);
-    relax(s, relaxation_controls(deck), dt);
-    commit_joint_damage(s);
-  }
+  if (!deck.mechanics) return;
+  s.mechanics.unrelaxed_s += dt;
+  if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return;
+  update_shrinkage_strain(s);
+  relax(s, relaxation_controls(deck), s.mechanics.unrelaxed_s);
+  commit_joint_damage(s);
+  s.mechanics.unrelaxed_s = 0.0;
 }
 
 void advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
   while (s.time_s < until_s) {
     const double remaining = until_s - s.time_s;
-    // The last step lands exactly on until_s (it is never longer than a stable step).
+    // The last step lands exactly on until_s (it is never longer than a stable step), and
+    // the solid is in equilibrium there.
     const bool last = remaining <= max_step_s;
-    coupling_step(s, deck, last ? remaining : max_step_s);
+    coupling_step(s, deck, last ? remaining : max_step_s, last);
     s.time_s = last ? until_s : s.time_s + max_step_s;
     ++s.moisture_steps;
   }
@@ -184,7 +187,8 @@ int run(const RunOptions& opt) {
   if (deck.mechanics)
     steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
           << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
-          << deck.relaxation_max_steps << " steps; initial equilibrium in " << state.mechanics.steps
+          << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
+          << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
           << " steps, residual " << state.mechanics.last_residual;
   log.info(steps.str() + "; output to " + outdir);
 

@@ -30,8 +30,10 @@ State setup_state(const Deck& deck);
 double coupling_step_limit(const State& state, const Deck& deck);
 
 // One step of the paper's loop (section 3.3): (1) moisture update, (2) shrinkage eigenstrain,
-// (3) mechanical relaxation to equilibrium, (4) joint breakage.
-void coupling_step(State& state, const Deck& deck, double dt);
+// (3) mechanical relaxation to equilibrium, (4) joint breakage. Steps 2-4 run when
+// `relax_now`, or once solver.mechanics_interval of moisture time has gathered since the
+// last relaxation (the solid then catches up with all of it at once).
+void coupling_step(State& state, const Deck& deck, double dt, bool relax_now);
 
 // Advances the state to until_s in coupling steps no longer than max_step_s, landing
 // exactly on until_s.

@@ -135,6 +135,7 @@ struct Mechanics {
   std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
   std::vector<double> fx_previous, fy_previous;  // [nodes] forces one step ago
   double step_s = 0;                      // pseudo-time step of the explicit integration
+  double unrelaxed_s = 0;                 // moisture time since the last relaxation
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
   std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap

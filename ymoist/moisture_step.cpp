@@ -61,7 +61,7 @@ void moisture_step(State& s, double dt) {
   const std::int64_t nm = static_cast<std::int64_t>(m.size());
 
   // Eq. 4 per triangle: inflow into corner a = -sum_b K_ab w_b; the three sum to zero (Eq. 8).
-#pragma omp parallel for schedule(static) if (std::size_t(nt) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nt) > parallel_minimum)
   for (std::int64_t t = 0; t < nt; ++t) {
     const index_t c0 = corner_node(static_cast<index_t>(t), 0);
     if (mnode[c0] == kNoIndex) continue;
@@ -73,7 +73,7 @@ void moisture_step(State& s, double dt) {
   }
 
   // Eqs. 5-7 per moisture node, plus its boundary terms.
-#pragma omp parallel for schedule(static) if (std::size_t(nm) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nm) > parallel_minimum)
   for (std::int64_t i = 0; i < nm; ++i) {
     double inflow = 0.0;
     for (index_t k = m.corner_offset[i]; k < m.corner_offset[i + 1]; ++k) inflow += corner_inflow[m.corner[k]];

@@ -8,7 +8,7 @@ namespace ydry {
 
 void update_shrinkage_strain(State& s) {
   const std::int64_t nt = std::int64_t(s.triangles.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nt) > kParallelMinimum)
+#pragma omp parallel for schedule(static) if (std::size_t(nt) > parallel_minimum)
   for (std::int64_t t = 0; t < nt; ++t) {
     const MaterialModel& m = s.materials[s.triangles.material[t]];
     const index_t i = corner_node(index_t(t), 0);

@@ -68,9 +68,10 @@ def run_ydry(ydry, size, pattern, outdir):
 
 
 def frame_files(outdir):
-    """Map output time -> .vtu path, read from the .pvd collection."""
+    """Map output time -> bulk .vtu path (part 0; part 1 is the cracks), from the .pvd."""
     root = ET.parse(outdir / "strip1d.pvd").getroot()
-    return {float(ds.get("timestep")): outdir / ds.get("file") for ds in root.iter("DataSet")}
+    return {float(ds.get("timestep")): outdir / ds.get("file") for ds in root.iter("DataSet")
+            if ds.get("part", "0") == "0"}
 
 
 def unique_moisture(vtu):

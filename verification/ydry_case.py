@@ -1,0 +1,126 @@
+"""Shared helpers for the verification check scripts.
+
+Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, read
+the last frame of a run, and print the suite verdict lines `CASE METRIC VALUE TOLERANCE
+PASS|FAIL` while remembering whether any failed. Used by shrinkage, fracture_modeI and
+fracture_modeII (strip1d keeps its own copy).
+"""
+import argparse
+import json
+import subprocess
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def arguments(doc, here):
+    """Parse --ydry and --out (default: build/ydry and the case's out/); create --out."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
+    parser.add_argument("--out", type=Path, default=here / "out")
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    return args
+
+
+def run_ydry(ydry, deck, outdir, overrides=()):
+    """Run `ydry DECK -o OUTDIR --force --quiet --set o ...`; return the wall time in seconds,
+    or None if ydry failed."""
+    cmd = [str(ydry), str(deck), "-o", str(outdir), "--force", "--quiet"]
+    for override in overrides:
+        cmd += ["--set", override]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode != 0:
+        print(f"ydry failed ({proc.returncode}): {' '.join(cmd)}\n{proc.stdout}{proc.stderr}")
+        return None
+    return time.perf_counter() - start
+
+
+def completed(outdir):
+    """True if summary.json says the run reached its end time."""
+    return bool(json.loads((Path(outdir) / "summary.json").read_text())["completed"])
+
+
+def read_csv(path):
+    """{column: numpy array}; numeric columns as float, the others as str."""
+    table = np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8")
+    table = np.atleast_1d(table)
+    return {name: table[name] for name in table.dtype.names}
+
+
+def reactions(outdir, boundary):
+    """The rows of reactions.csv for one boundary, as {column: array}."""
+    table = read_csv(Path(outdir) / "reactions.csv")
+    rows = table["boundary"] == boundary
+    return {name: column[rows] for name, column in table.items() if name != "boundary"}
+
+
+def _last_grid(outdir, part):
+    """The last .vtu of one part of the run's .pvd (part 0: the solid, part 1: the cracks)."""
+    outdir = Path(outdir)
+    pvd = next(outdir.glob("*.pvd"))
+    files = [ds.get("file") for ds in ET.parse(pvd).getroot().iter("DataSet") if ds.get("part") == str(part)]
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(outdir / files[-1]))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def _cell_arrays(grid):
+    data = grid.GetCellData()
+    return {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i)) for i in range(data.GetNumberOfArrays())}
+
+
+def last_frame(outdir):
+    """The solid in the last frame: a dict with the reference point coordinates x0 (n x 2),
+    displacement u (n x 2), triangle connectivity (m x 3), triangle reference areas (m) and
+    every cell array (e.g. stress, m x 3)."""
+    grid = _last_grid(outdir, 0)
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))[:, :2]
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 3)
+    x0 = points - u
+    a, b, c = x0[cells[:, 0]], x0[cells[:, 1]], x0[cells[:, 2]]
+    area = 0.5 * np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+    return {"x0": x0, "u": u, "cells": cells, "area": area, **_cell_arrays(grid)}
+
+
+def last_cracks(outdir):
+    """The broken joints in the last frame: a dict with their end points in the current
+    configuration, ends (m x 2 x 2), and every cell array (opening, slip)."""
+    grid = _last_grid(outdir, 1)
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
+    return {"ends": points[cells], **_cell_arrays(grid)}
+
+
+def relative_error(value, exact):
+    return abs(value - exact) / abs(exact)
+
+
+class Verdicts:
+    """Prints `CASE METRIC VALUE TOLERANCE PASS|FAIL` lines and remembers any failure."""
+
+    def __init__(self, case):
+        self.case = case
+        self.ok = True
+
+    def check(self, metric, value, tolerance, passed):
+        shown = f"{value:.4g}" if isinstance(value, float) else str(value).lower()
+        print(f"{self.case} {metric} {shown} {tolerance} {'PASS' if passed else 'FAIL'}")
+        self.ok &= bool(passed)
+        return passed
+
+    def below(self, metric, value, tolerance):
+        """PASS if value <= tolerance (a NaN fails)."""
+        return self.check(metric, value, tolerance, value <= tolerance)
+
+    def exit_code(self):
+        return 0 if self.ok else 1
