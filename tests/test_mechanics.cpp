@@ -4,12 +4,14 @@
 #include <omp.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <tuple>
 
 #include "tests/test_support.h"
 #include "ycore/blocked_sum.h"
+#include "ycore/input_error.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
 #include "ycore/run.h"
@@ -249,4 +251,30 @@ TEST_CASE("shrinkage results do not depend on the relaxation controls", "[mechan
     CHECK(d == Approx(shortening).epsilon(1e-3));
     if (std::string(set).find("max_steps") == std::string::npos) CHECK(n != steps);
   }
+}
+
+TEST_CASE("pre-existing cracks of the deck break the joints along a segment and split the moisture field there", "[mechanics]") {
+  ydry_test::TempDir dir;
+  const auto with_crack = [&](const std::string& segment) {
+    return setup_state(block_deck(dir, "right",
+                                  {"cracks=[{" + segment + "}]", "materials.soil.moisture_conductivity=1e-6",
+                                   "materials.soil.initial_moisture=0.3", "materials.soil.shrinkage_coefficient=0.1"}));
+  };
+  // A segment across the cells instead of along their edges is an input error.
+  CHECK_THROWS_WITH(with_crack("from=[0.0005,0.0],to=[0.0005,0.003]"),
+                    Catch::Contains("cracks[0]: the segment does not follow jointed mesh edges"));
+  const State s = with_crack("from=[0.002,0.003],to=[0.002,0.001]");  // 2 mm down from the top, at x = 2 mm
+  REQUIRE(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1) == 2);
+  // The vertices strictly inside the crack and on the top surface are split in two moisture
+  // nodes; the tip vertex (x = 2 mm, y = 1 mm) stays one.
+  const auto moisture_nodes_at = [&](double x, double y) {
+    std::vector<index_t> found;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (std::hypot(s.nodes.x0[i] - x, s.nodes.y0[i] - y) < 1e-9) found.push_back(s.nodes.mnode[i]);
+    std::sort(found.begin(), found.end());
+    return std::size_t(std::unique(found.begin(), found.end()) - found.begin());
+  };
+  CHECK(moisture_nodes_at(0.002, 0.003) == 2);
+  CHECK(moisture_nodes_at(0.002, 0.002) == 2);
+  CHECK(moisture_nodes_at(0.002, 0.001) == 1);
 }

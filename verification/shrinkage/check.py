@@ -4,7 +4,8 @@
 Runs ydry on shrinkage.toml in plane stress and plane strain, compares the vertical stress
 (from the top support's reaction and from the element stresses) and the horizontal shortening
 with the closed form, reruns plane stress with a larger relaxation step cap and a tighter
-relaxation tolerance to show the answer does not depend on them, prints the verdict lines
+relaxation tolerance to show the answer does not depend on them, prints an info line per run
+(wall time, relaxation steps, final residual ratio) and the verdict lines
 `shrinkage METRIC VALUE TOLERANCE PASS|FAIL`, writes out/results.md and
 out/shrinkage_fields.png. Exits 1 if any check fails.
 """
