@@ -6,9 +6,10 @@ namespace ydry {
 
 double softening_curve(double damage) {
   constexpr double a = 0.63, b = 1.8, c = 6.0;
-  const double d = std::clamp(damage, 0.0, 1.0);
+  if (damage <= 0.0) return 1.0;  // the intact joint: the common case, without exp
+  const double d = std::min(damage, 1.0), r = 1.0 - d, r2 = r * r;
   return (1.0 - (a + b - 1.0) / (a + b) * std::exp(d * (a + c * b) / ((a + b) * (1.0 - a - b)))) *
-         (a * (1.0 - d) + b * std::pow(1.0 - d, c));
+         (a * r + b * r2 * r2 * r2);  // (1 - D)^c with c = 6
 }
 
 double softening_curve_area() {

@@ -253,7 +253,8 @@ int run(const RunOptions& opt) {
          << e.kinetic_J << "\n";
   }
   tail
-       << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, summary.json, deck.toml, log.txt";
+       << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, "
+       << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << "summary.json, deck.toml, log.txt";
   log.info(tail.str());
   return 0;
 }
