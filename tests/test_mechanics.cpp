@@ -278,3 +278,25 @@ TEST_CASE("pre-existing cracks of the deck break the joints along a segment and 
   CHECK(moisture_nodes_at(0.002, 0.002) == 2);
   CHECK(moisture_nodes_at(0.002, 0.001) == 1);
 }
+
+TEST_CASE("a rigid material stays put and never sets the time step", "[mechanics]") {
+  const auto state = [](const std::string& base_young) {
+    std::vector<std::string> sets = {"run.mechanics=true", "materials.soil.young=1e6", "materials.soil.poisson=0.3",
+                                     "materials.soil.breakable=false", "materials.soil.shrinkage_coefficient=0.05",
+                                     "materials.soil.initial_moisture=0.3", "materials.soil.stress_free_moisture=0.35",
+                                     "materials.base.rigid=true"};
+    if (!base_young.empty()) sets.push_back("materials.base.young=" + base_young);
+    return setup_state(load_deck(YDRY_SOURCE_DIR "/tests/data/two_materials.toml", sets));
+  };
+  const State s = state("");
+  const std::uint16_t base = std::uint16_t(std::find(s.material_names.begin(), s.material_names.end(), "base") -
+                                           s.material_names.begin());
+  double soil_motion = 0;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    const double motion = std::hypot(s.nodes.x[i] - s.nodes.x0[i], s.nodes.y[i] - s.nodes.y0[i]);
+    if (s.triangles.material[triangle_of(index_t(i))] == base) CHECK(motion == 0.0);
+    else soil_motion = std::max(soil_motion, motion);
+  }
+  CHECK(soil_motion > 1e-6);  // the soil did shrink and sag: the base held still under it
+  CHECK(state("7e10").mechanics.step_s == s.mechanics.step_s);  // a stiff base changes nothing
+}
