@@ -163,6 +163,8 @@ void advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
 int run(const RunOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const Deck deck = load_deck(opt.deck_path, opt.overrides);
+  Progress progress;  // wall time counts the set-up too: it holds the initial equilibrium
+  progress.start(deck.end_time_s, opt.quiet, opt.progress_every_s);
   State state = setup_state(deck);
   const std::string outdir = opt.outdir.empty() ? "runs/" + deck.name : opt.outdir;
   prepare_output_dir(outdir, opt.force);
@@ -199,8 +201,6 @@ int run(const RunOptions& opt) {
   reactions << "time_s,boundary,reaction_x_N,reaction_y_N,mean_ux_m,mean_uy_m,work_J\n";
   CracksCsv cracks_csv{outdir + "/cracks.csv", {}};
   std::uint64_t capped_reported = 0;
-  Progress progress;
-  progress.start(deck.end_time_s, opt.quiet, opt.progress_every_s);
   long next_frame = 0;
   const auto write_outputs = [&](bool completed) {
     if (state.time_s >= next_frame * deck.output_interval_s * (1.0 - 1e-12) || completed) {
