@@ -23,7 +23,11 @@ inline std::size_t parallel_minimum = 16384;
 template <std::size_t K, class Body>
 std::array<double, K> blocked_sum(std::size_t n, Body body) {
   const std::size_t blocks = (n + kReductionBlock - 1) / kReductionBlock;
-  std::vector<std::array<double, K>> partial(blocks);
+  // Reused by the calling thread, so a step allocates nothing; bound to a reference here so
+  // that the team writes the caller's buffer, not thread-local copies of its own.
+  thread_local std::vector<std::array<double, K>> buffer;
+  buffer.assign(blocks, std::array<double, K>{});
+  std::vector<std::array<double, K>>& partial = buffer;
 #pragma omp parallel for schedule(static) if (n > parallel_minimum)
   for (std::size_t b = 0; b < blocks; ++b) {
     std::array<double, K> sums{};

@@ -50,7 +50,8 @@ std::vector<index_t> right_end_corners(const State& s) {
   return corners;
 }
 
-std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end) {
+std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end,
+                               const std::vector<Crack>& crack_list) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool moisture = any_moisture(s);
   std::vector<double> row = {s.time_s,
@@ -61,7 +62,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
     row.resize(kSeriesColumns.size(), nan);
     return row;
   }
-  const CrackSummary cracks = summarize_cracks(find_cracks(s, deck.crack_width_threshold_m));
+  const CrackSummary cracks = summarize_cracks(crack_list);
   double right_end_ux = nan;
   if (!right_end.empty()) {
     right_end_ux = 0;
@@ -207,12 +208,14 @@ int run(const RunOptions& opt) {
       write_frame(frames, state, state.time_s);
       next_frame = std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12))) + 1;
     }
-    series.rows.push_back(series_row(state, deck, right_end));
+    const std::vector<Crack> cracks =
+        deck.mechanics ? find_cracks(state, deck.crack_width_threshold_m) : std::vector<Crack>{};
+    series.rows.push_back(series_row(state, deck, right_end, cracks));
     write_series_csv(outdir + "/series.csv", series);
     if (deck.mechanics) {
       append_reactions(reactions, state);
       write_file_atomically(outdir + "/reactions.csv", reactions.str());
-      append_cracks_csv(cracks_csv, state.time_s, find_cracks(state, deck.crack_width_threshold_m));
+      append_cracks_csv(cracks_csv, state.time_s, cracks);
       if (state.mechanics.capped_relaxations > capped_reported) {
         std::ostringstream w;
         w << state.mechanics.capped_relaxations - capped_reported << " relaxation(s) up to t = " << state.time_s
