@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -131,5 +132,34 @@ TEST_CASE("the 5 mm strip matches Eq. 20 within 0.5 % (relative L2) at 800k s", 
   const double l2 = std::sqrt(err2 / ref2);
   INFO("relative L2 error " << l2);
   CHECK(l2 <= 0.005);
+  CHECK(water_balance_error(s) < 1e-12);
+}
+
+TEST_CASE("a joint that breaks splits the moisture nodes: water is conserved and no longer crosses", "[moisture][mechanics]") {
+  // The mode I bar of the verification, wetted from its fixed left side while it is pulled
+  // apart across its middle line of joints.
+  const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/fracture_modeI/fracture_modeI.toml",
+                              {"materials.bar.moisture_conductivity=1e-8", "materials.bar.initial_moisture=0.2",
+                               "materials.bar.shrinkage_coefficient=0.0",
+                               "moisture.boundary=[{on=\"left\",type=\"flux\",rate=1e-5}]"});
+  State s = setup_state(deck);
+  const std::size_t intact_nodes = s.moisture.size();
+  double step = advance_to(s, deck, 300.0, coupling_step_limit(s, deck));
+  REQUIRE(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1) == 4);
+  CHECK(s.moisture.size() == intact_nodes + 5);  // the five vertices of the cut line split
+  CHECK(water_balance_error(s) < 1e-12);
+  const auto right_half_water = [&] {
+    double water = 0;
+    for (std::size_t i = 0; i < s.moisture.size(); ++i) {
+      const index_t c = corner_node(triangle_of(s.moisture.corner[s.moisture.corner_offset[i]]), 0);
+      const double centroid_x = (s.nodes.x0[c] + s.nodes.x0[c + 1] + s.nodes.x0[c + 2]) / 3.0;
+      if (centroid_x > 0.001) water += s.moisture.w[i] * s.moisture.dry_mass[i];  // a right-column triangle's
+    }
+    return water;
+  };
+  const double right_before = right_half_water(), total_before = total_water_kg(s);
+  step = advance_to(s, deck, 600.0, step);
+  CHECK(total_water_kg(s) > total_before * 1.001);          // the left half keeps taking water in
+  CHECK(right_half_water() == Approx(right_before).epsilon(1e-12));  // the right half gets none of it
   CHECK(water_balance_error(s) < 1e-12);
 }

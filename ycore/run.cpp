@@ -26,6 +26,13 @@ namespace {
 
 bool any_moisture(const State& s) { return s.moisture.size() > 0; }
 
+std::vector<std::uint8_t> triangles_with_moisture(const State& s, const Deck& deck) {
+  std::vector<std::uint8_t> flags(s.triangles.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    flags[t] = deck.materials.at(s.material_names[s.triangles.material[t]]).has_moisture();
+  return flags;
+}
+
 RelaxationControls relaxation_controls(const Deck& deck) {
   return {deck.relaxation_tolerance, deck.relaxation_max_steps};
 }
@@ -113,9 +120,7 @@ void append_reactions(std::ostringstream& csv, const State& s) {
 State setup_state(const Deck& deck) {
   State s = build_state(load_mesh(deck), deck);
   break_joints_along_cracks(s, deck);
-  std::vector<std::uint8_t> has_moisture(s.triangles.size());
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-    has_moisture[t] = deck.materials.at(s.material_names[s.triangles.material[t]]).has_moisture();
+  const std::vector<std::uint8_t> has_moisture = triangles_with_moisture(s, deck);
   const bool moisture = std::any_of(has_moisture.begin(), has_moisture.end(), [](std::uint8_t h) { return h != 0; });
   if (!moisture && !deck.mechanics)
     throw InputError(deck.path + ": materials: no material of the mesh has moisture_conductivity, "
@@ -138,27 +143,35 @@ double coupling_step_limit(const State& s, const Deck& deck) {
   return step;
 }
 
-void coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
+bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   if (any_moisture(s)) moisture_step(s, dt);
-  if (!deck.mechanics) return;
+  if (!deck.mechanics) return false;
   s.mechanics.unrelaxed_s += dt;
-  if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return;
+  if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
   update_shrinkage_strain(s);
   relax(s, relaxation_controls(deck), s.mechanics.unrelaxed_s);
-  commit_joint_damage(s);
   s.mechanics.unrelaxed_s = 0.0;
+  if (commit_joint_damage(s) == 0 || !any_moisture(s)) return false;
+  // Step 4: the moisture nodes split across the joints that broke; water is conserved.
+  const std::vector<index_t> old_mnode = s.nodes.mnode;
+  const std::vector<double> old_w = s.moisture.w;
+  group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
+  remap_moisture_nodes(s, deck, old_mnode, old_w);
+  return true;
 }
 
-void advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
+double advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
   while (s.time_s < until_s) {
     const double remaining = until_s - s.time_s;
     // The last step lands exactly on until_s (it is never longer than a stable step), and
     // the solid is in equilibrium there.
     const bool last = remaining <= max_step_s;
-    coupling_step(s, deck, last ? remaining : max_step_s, last);
+    const bool split = coupling_step(s, deck, last ? remaining : max_step_s, last);
     s.time_s = last ? until_s : s.time_s + max_step_s;
     ++s.moisture_steps;
+    if (split) max_step_s = std::min(max_step_s, coupling_step_limit(s, deck));  // smaller nodes
   }
+  return max_step_s;
 }
 
 int run(const RunOptions& opt) {
@@ -184,7 +197,7 @@ int run(const RunOptions& opt) {
   for (std::size_t m = 0; m < material_used.size(); ++m)
     if (!material_used[m])
       log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
-  const double max_step = coupling_step_limit(state, deck);
+  double max_step = coupling_step_limit(state, deck);
   std::ostringstream steps;
   steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";
   if (deck.mechanics)
@@ -236,7 +249,7 @@ int run(const RunOptions& opt) {
     const double next_output = std::min(deck.end_time_s, row * deck.series_interval_s);
     while (state.time_s < next_output) {
       // Advance in chunks so the progress line stays live on long intervals.
-      advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
+      max_step = advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
       progress.update(state.time_s, state.moisture_steps);
     }
     write_outputs(state.time_s >= deck.end_time_s);

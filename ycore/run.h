@@ -30,14 +30,16 @@ State setup_state(const Deck& deck);
 double coupling_step_limit(const State& state, const Deck& deck);
 
 // One step of the paper's loop (section 3.3): (1) moisture update, (2) shrinkage eigenstrain,
-// (3) mechanical relaxation to equilibrium, (4) joint breakage. Steps 2-4 run when
-// `relax_now`, or once solver.mechanics_interval of moisture time has gathered since the
-// last relaxation (the solid then catches up with all of it at once).
-void coupling_step(State& state, const Deck& deck, double dt, bool relax_now);
+// (3) mechanical relaxation to equilibrium, (4) joint breakage and the moisture nodes split
+// across the new cracks. Steps 2-4 run when `relax_now`, or once solver.mechanics_interval of
+// moisture time has gathered since the last relaxation (the solid then catches up with all of
+// it at once). Returns true when the moisture topology changed.
+bool coupling_step(State& state, const Deck& deck, double dt, bool relax_now);
 
 // Advances the state to until_s in coupling steps no longer than max_step_s, landing
-// exactly on until_s.
-void advance_to(State& state, const Deck& deck, double until_s, double max_step_s);
+// exactly on until_s. Returns the step limit to go on with: lower than max_step_s when a
+// split of the moisture nodes made the moisture stability limit smaller.
+double advance_to(State& state, const Deck& deck, double until_s, double max_step_s);
 
 // Runs a deck end to end with outputs; returns the process exit code.
 int run(const RunOptions& options);

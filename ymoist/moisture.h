@@ -12,6 +12,12 @@ namespace ydry {
 // [[moisture.boundary]] entries, fixed values, and the water balance's starting point.
 void init_moisture(State& state, const Deck& deck);
 
+// After the moisture nodes were regrouped (ycrack, when joints broke): each new node takes
+// the w of the node it was part of, its share of dry mass and of the boundary terms, so the
+// water in the soil is unchanged. old_mnode and old_w are nodes.mnode and moisture.w before.
+void remap_moisture_nodes(State& state, const Deck& deck, const std::vector<index_t>& old_mnode,
+                          const std::vector<double>& old_w);
+
 // The largest explicit step that is stable for every moisture node, times `safety`
 // (Gershgorin: dt <= 2 m_i / (K_ii + sum_j |K_ij| + exchange_i); for the usual M-matrix,
 // m_i / K_ii). Infinite when nothing diffuses or exchanges.

@@ -82,6 +82,18 @@ void add_boundary_terms(State& s, const Deck& deck) {
   m.boundary_inflow.assign(nm, 0.0);
 }
 
+// Dry mass of every moisture node: density x a third of each of its triangles' areas x thickness.
+void assign_dry_mass(State& s, const Deck& deck) {
+  MoistureNodes& m = s.moisture;
+  m.dry_mass.assign(m.corner_offset.size() - 1, 0.0);
+  for (index_t t = 0; t < s.triangles.size(); ++t) {
+    const MaterialDeck& mat = deck.materials.at(s.material_names[s.triangles.material[t]]);
+    if (!mat.has_moisture()) continue;
+    for (int a = 0; a < 3; ++a)
+      m.dry_mass[s.nodes.mnode[corner_node(t, a)]] += *mat.density * s.triangles.area0[t] / 3.0 * deck.thickness_m;
+  }
+}
+
 }  // namespace
 
 void init_moisture(State& s, const Deck& deck) {
@@ -89,7 +101,6 @@ void init_moisture(State& s, const Deck& deck) {
   const index_t nm = static_cast<index_t>(m.corner_offset.size() - 1);
   const index_t nt = static_cast<index_t>(s.triangles.size());
   m.w.assign(nm, 0.0);
-  m.dry_mass.assign(nm, 0.0);
   s.moisture_elements.conductance.assign(6 * std::size_t(nt), 0.0);
   s.moisture_elements.corner_inflow.assign(3 * std::size_t(nt), 0.0);
   for (index_t t = 0; t < nt; ++t) {
@@ -98,19 +109,26 @@ void init_moisture(State& s, const Deck& deck) {
     const index_t c0 = corner_node(t, 0);
     triangle_conductance(&s.nodes.x0[c0], &s.nodes.y0[c0], *mat.moisture_conductivity * deck.thickness_m,
                          &s.moisture_elements.conductance[6 * std::size_t(t)]);
-    // Dry mass: density x a third of each triangle's area x thickness; all corners of one
-    // moisture node belong to one material, so w_0 is that material's.
-    for (int a = 0; a < 3; ++a) {
-      const index_t mn = s.nodes.mnode[c0 + a];
-      m.dry_mass[mn] += *mat.density * s.triangles.area0[t] / 3.0 * deck.thickness_m;
-      m.w[mn] = *mat.initial_moisture;
-    }
+    // All corners of one moisture node belong to one material, so w_0 is that material's.
+    for (int a = 0; a < 3; ++a) m.w[s.nodes.mnode[c0 + a]] = *mat.initial_moisture;
   }
+  assign_dry_mass(s, deck);
   add_boundary_terms(s, deck);
   for (index_t i = 0; i < nm; ++i)
     if (!std::isnan(m.fixed_w[i])) m.w[i] = m.fixed_w[i];
   s.water = WaterBalance{};
   s.water.initial_kg = total_water_kg(s);
+}
+
+void remap_moisture_nodes(State& s, const Deck& deck, const std::vector<index_t>& old_mnode,
+                          const std::vector<double>& old_w) {
+  MoistureNodes& m = s.moisture;
+  const index_t nm = static_cast<index_t>(m.corner_offset.size() - 1);
+  m.w.assign(nm, 0.0);
+  // A new node is part of one old node (splitting only refines), whose w it inherits.
+  for (index_t i = 0; i < nm; ++i) m.w[i] = old_w[old_mnode[m.corner[m.corner_offset[i]]]];
+  assign_dry_mass(s, deck);
+  add_boundary_terms(s, deck);
 }
 
 }  // namespace ydry
