@@ -17,8 +17,6 @@ void joint_forces(State& s, double dt) {
   const Nodes& n = s.nodes;
   Joints& jt = s.joints;
   const double thickness = s.mechanics.thickness_m;
-  constexpr double weight[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
-  constexpr double share0[3] = {1.0, 0.5, 0.0};  // interpolation weight of end 0 (nodes 0, 3)
   const std::int64_t nj = std::int64_t(jt.size());
 #pragma omp parallel for schedule(static) if (std::size_t(nj) > parallel_minimum)
   for (std::int64_t j = 0; j < nj; ++j) {
@@ -38,11 +36,11 @@ void joint_forces(State& s, double dt) {
     const double h0 = jt.length0[j];
     double g0x = 0, g0y = 0, g1x = 0, g1y = 0, q = 0;
     for (int p = 0; p < 3; ++p) {
-      const double a = share0[p], b = 1.0 - a;
+      const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
       const double dx = a * d0x + b * d1x, dy = a * d0y + b * d1y;
       const double o = dx * nx + dy * ny, sl = dx * tx + dy * ty;
       const PointTraction tr = cohesive_traction(m, h0, o, sl, jt.damage[3 * j + p]);
-      const double w = weight[p] * h0 * thickness;
+      const double w = kJointPointWeight[p] * h0 * thickness;
       const double gx = w * (tr.normal * nx + tr.shear * tx), gy = w * (tr.normal * ny + tr.shear * ty);
       g0x += a * gx, g0y += a * gy, g1x += b * gx, g1y += b * gy;
       q += w * (tr.shear * o - tr.normal * sl) / h;

@@ -28,6 +28,11 @@ struct PointTraction {
 PointTraction cohesive_traction(const MaterialModel& m, double h0, double o, double s,
                                 double committed_damage);
 
+// A joint's three integration points: the two ends and the middle, with Simpson weights of
+// the initial length, and the share of end 0 (nodes 0, 3) in each point's opening and slip.
+constexpr double kJointPointWeight[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
+constexpr double kJointPointShareOfEnd0[3] = {1.0, 0.5, 0.0};
+
 // Opening and slip (m) at the joint's two ends: end 0 pairs nodes 0 and 3, end 1 nodes 1 and 2.
 // The normal points into the first triangle, so a positive opening separates the faces.
 struct JointKinematics {

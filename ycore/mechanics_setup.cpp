@@ -2,6 +2,7 @@
 // boundary constraints (DESIGN sections 3 and 4).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "ycore/build_state.h"
@@ -164,6 +165,19 @@ void set_constraints(State& s, const Deck& deck) {
   }
 }
 
+// |net force|^2 that round-off alone produces: coordinates of size L carry an error of
+// eps L, which a joint of penalty p turns into a force of about p t eps L per node. A
+// relaxation also ends when the out-of-balance is within 10 times that, so an unloaded or
+// fully broken solid does not chase round-off.
+double roundoff_net2(const State& s) {
+  double penalty = 0.0, extent = 0.0;
+  for (const MaterialModel& m : s.materials) penalty = std::max({penalty, m.penalty, m.young});
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    extent = std::max({extent, std::fabs(s.nodes.x0[i]), std::fabs(s.nodes.y0[i])});
+  const double force = 10.0 * penalty * s.mechanics.thickness_m * std::numeric_limits<double>::epsilon() * extent;
+  return force * force * double(s.nodes.size());
+}
+
 }  // namespace
 
 void init_mechanics(State& s, const Deck& deck) {
@@ -184,6 +198,7 @@ void init_mechanics(State& s, const Deck& deck) {
   set_joint_data(s, deck);
   set_constraints(s, deck);
   mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
+  mech.roundoff_net2 = roundoff_net2(s);
 }
 
 double stable_mechanics_step(const State& s, double safety) {

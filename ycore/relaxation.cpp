@@ -9,7 +9,6 @@
 // in pseudo-time does not.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "ycore/blocked_sum.h"
 #include "ycore/joint_law.h"
@@ -24,19 +23,6 @@ struct ForceMeasures {
   double rayleigh_numerator = 0, rayleigh_denominator = 0;
   double ratio() const { return reference2 > 0.0 ? std::sqrt(net2 / reference2) : (net2 > 0.0 ? INFINITY : 0.0); }
 };
-
-// |net force|^2 that round-off alone produces: coordinates of size L carry an error of
-// eps L, which a joint of penalty p turns into a force of about p t eps L per node. A
-// relaxation also ends when the out-of-balance is within 10 times that, so an unloaded or
-// fully broken solid does not chase round-off.
-double roundoff_net2(const State& s) {
-  double penalty = 0.0, extent = 0.0;
-  for (const MaterialModel& m : s.materials) penalty = std::max({penalty, m.penalty, m.young});
-  for (std::size_t i = 0; i < s.nodes.size(); ++i)
-    extent = std::max({extent, std::fabs(s.nodes.x0[i]), std::fabs(s.nodes.y0[i])});
-  const double force = 10.0 * penalty * s.mechanics.thickness_m * std::numeric_limits<double>::epsilon() * extent;
-  return force * force * double(s.nodes.size());
-}
 
 // Adds the joint forces to the node forces (through each node's joint slots) and measures.
 ForceMeasures gather_joint_forces(State& s) {
@@ -149,9 +135,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   mech.fy_previous = n.fy;
 
   RelaxationResult result;
-  const double roundoff2 = roundoff_net2(s);
   const auto balanced = [&](const ForceMeasures& m) {
-    return m.net2 <= roundoff2 || m.ratio() <= controls.tolerance;
+    return m.net2 <= mech.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
   result.residual = measures.ratio();
   double damping = 0.0;
@@ -189,10 +174,9 @@ std::size_t commit_joint_damage(State& s) {
     const MaterialModel& m = s.materials[jt.material[j]];
     if (jt.broken[j] || !m.mechanical || !m.breakable) return;
     const JointKinematics k = joint_kinematics(s.nodes, &jt.node[4 * j]);
-    constexpr double share0[3] = {1.0, 0.5, 0.0};
     int failed = 0;
     for (int p = 0; p < 3; ++p) {
-      const double a = share0[p], b = 1.0 - a;
+      const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
       double& d = jt.damage[3 * j + p];
       d = std::max(d, cohesive_traction(m, jt.length0[j], a * k.opening[0] + b * k.opening[1],
                                         a * k.slip[0] + b * k.slip[1], d).damage);

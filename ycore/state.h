@@ -136,6 +136,7 @@ struct Mechanics {
   std::vector<double> fx_previous, fy_previous;  // [nodes] forces one step ago
   double step_s = 0;                      // pseudo-time step of the explicit integration
   double unrelaxed_s = 0;                 // moisture time since the last relaxation
+  double roundoff_net2 = 0;               // N^2: |net force|^2 that round-off alone makes
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
   std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap
