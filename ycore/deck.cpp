@@ -173,7 +173,13 @@ std::pair<std::string, std::string> material_pair(const std::string& key, const 
 }
 
 void read_contact(TableReader r, Deck& d, const Origin& file) {
-  d.contact_penalty_pa = r.optional_number("penalty", kPositive);
+  // Default 10 E of the stiffest deformable material (fdem-notes 3: 10 E to 100 E).
+  std::optional<double> stiffest;
+  for (const auto& [name, m] : d.materials)
+    if (m.young && !m.rigid) stiffest = std::max(stiffest.value_or(0.0), *m.young);
+  d.contact_penalty_pa = stiffest ? r.number("penalty", kPositive, 10.0 * *stiffest)
+                                  : r.optional_number("penalty", kPositive);
+  d.contact_damping = r.number("damping", Range{0, 1, false, false}, 0.5);
   TableReader friction(r.subtable("friction"), "contact.friction", file);
   for (const std::string& key : friction.keys())
     d.friction_deg[material_pair(key, d, friction)] = friction.number(key, Range{0, 90, false, true}, std::nullopt);
@@ -189,6 +195,7 @@ void read_solver(TableReader r, Deck& d) {
   d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.8);
   d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);
   d.relaxation_max_steps = r.integer("relaxation_max_steps", 1, 200000);
+  d.dynamic = r.string("integration", {"quasi_static", "dynamic"}, std::string("quasi_static")) == "dynamic";
   r.finish();
 }
 

@@ -94,8 +94,9 @@ struct Deck {
   std::vector<MechanicsBoundaryDeck> mechanics_boundaries;
 
   // [contact]
-  std::optional<double> contact_penalty_pa;  // Pa, normal penalty
+  std::optional<double> contact_penalty_pa;  // Pa, normal penalty (default 10 x the largest E)
   std::map<std::pair<std::string, std::string>, double> friction_deg;  // sorted name pair
+  double contact_damping = 0.5;  // normal dashpot, fraction of critical
 
   // [solver]
   double moisture_safety = 0.9;  // fraction of the explicit stability limit
@@ -105,6 +106,9 @@ struct Deck {
   double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
+  // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
+  // instead of relaxing to equilibrium after each coupling step.
+  bool dynamic = false;
 
   toml::table resolved;  // the deck as used: file, --set overrides and defaults
 };

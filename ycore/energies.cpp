@@ -29,6 +29,7 @@ Energies energies(const State& s) {
     e.joint_work_J += s.joints.work[j];
     if (s.joints.broken[j]) e.fracture_J += s.joints.work[j];
   }
+  e.contact_work_J = s.contact.work_J;
   for (const MechanicsBoundary& b : s.mechanics_boundaries) e.external_work_J += b.work_J;
   e.gravity_work_J = s.mechanics.gravity_work_J;
   return e;

@@ -48,13 +48,15 @@ void joint_forces(State& s, double dt) {
     // Node 0 (end 0, first face) is pulled back by -g0, its partner 3 by +g0; the axis term
     // acts along n with +q/2 on nodes 0, 3 and -q/2 on nodes 1, 2.
     const double qx = 0.5 * q * nx, qy = 0.5 * q * ny;
-    f[0] = -g0x + qx, f[1] = -g0y + qy;
-    f[2] = -g1x - qx, f[3] = -g1y - qy;
-    f[4] = g1x - qx, f[5] = g1y - qy;
-    f[6] = g0x + qx, f[7] = g0y + qy;
+    const double fresh[8] = {-g0x + qx, -g0y + qy, -g1x - qx, -g1y - qy,
+                             g1x - qx,  g1y - qy,  g0x + qx,  g0y + qy};
+    // Work over the step by the trapezoid of the forces before and after it: exact for a
+    // linear spring, so a vibrating joint books no spurious work.
     double power = 0.0;
-    for (int k = 0; k < 4; ++k) power += f[2 * k] * n.vx[node[k]] + f[2 * k + 1] * n.vy[node[k]];
+    for (int k = 0; k < 4; ++k)
+      power += 0.5 * ((f[2 * k] + fresh[2 * k]) * n.vx[node[k]] + (f[2 * k + 1] + fresh[2 * k + 1]) * n.vy[node[k]]);
     jt.work[j] -= power * dt;
+    for (int k = 0; k < 8; ++k) f[k] = fresh[k];
   }
 }
 

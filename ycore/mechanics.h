@@ -23,8 +23,9 @@ double stable_mechanics_step(const State& state, double safety);
 // its three nodes) and the element stress.
 void element_forces(State& state);
 
-// Joint forces into joints.force, and the work they did over the last step (velocities x
-// dt) into joints.work. Broken joints carry nothing.
+// Joint forces into joints.force, and the work done on them over the last step (the
+// trapezoid of the forces before and after it, times velocities x dt) into joints.work. Broken joints carry nothing: their faces meet through contact
+// (ycore/contact.h).
 void joint_forces(State& state, double dt);
 
 struct RelaxationControls {
@@ -45,6 +46,12 @@ struct RelaxationResult {
 // boundary and gravity work are booked.
 RelaxationResult relax(State& state, const RelaxationControls& controls, double coupling_dt);
 
+// The dynamic alternative (solver.integration = "dynamic"): the solid moves for coupling_dt
+// seconds of real time in undamped central-difference steps no longer than the stable one,
+// velocities carried over from the last call; driven nodes move at their velocity. Books the
+// reactions and the work like relax.
+RelaxationResult move_dynamically(State& state, double coupling_dt);
+
 // Commits each joint point's damage (maximum over time) and breaks, for good, every joint
 // with two of its three points at D = 1. Returns the number of joints that broke.
 std::size_t commit_joint_damage(State& state);
@@ -54,6 +61,8 @@ struct Energies {
   double elastic_J = 0;      // strain energy of the triangles
   double joint_work_J = 0;   // work done on all joints since t = 0
   double fracture_J = 0;     // work done on the joints that broke (all of it dissipated)
+  double contact_work_J = 0; // work done on the contacts: friction and the normal dashpot
+                             // dissipate it, the penalty stores some of it
   double external_work_J = 0;  // through fixed and driven boundaries
   double gravity_work_J = 0;
 };

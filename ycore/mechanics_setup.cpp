@@ -6,6 +6,7 @@
 #include <map>
 
 #include "ycore/build_state.h"
+#include "ycore/contact.h"
 #include "ycore/input_error.h"
 #include "ycore/mechanics.h"
 
@@ -120,8 +121,20 @@ void set_joint_data(State& s, const Deck& deck) {
 void set_constraints(State& s, const Deck& deck) {
   Nodes& n = s.nodes;
   n.constraint.assign(n.size(), 0);
-  for (std::size_t i = 0; i < n.size(); ++i)
-    if (s.materials[s.triangles.material[triangle_of(index_t(i))]].rigid) n.constraint[i] = kFixX | kFixY;
+  // A rigid material is a support of its own: reactions.csv books the force on it as
+  // "rigid:NAME".
+  for (std::size_t id = 0; id < s.materials.size(); ++id) {
+    if (!s.materials[id].rigid) continue;
+    MechanicsBoundary b;
+    b.name = "rigid:" + s.material_names[id];
+    b.fix_x = b.fix_y = true;
+    for (std::size_t i = 0; i < n.size(); ++i)
+      if (s.triangles.material[triangle_of(index_t(i))] == id) {
+        n.constraint[i] = kFixX | kFixY;
+        b.nodes.push_back(index_t(i));
+      }
+    s.mechanics_boundaries.push_back(std::move(b));
+  }
 
   struct Condition { double velocity; const MechanicsBoundaryDeck* by; };
   std::map<index_t, Condition> x_condition, y_condition;
@@ -197,6 +210,7 @@ void init_mechanics(State& s, const Deck& deck) {
   set_reference_geometry(s);
   set_joint_data(s, deck);
   set_constraints(s, deck);
+  init_contact(s, deck);
   mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
 }
@@ -221,6 +235,7 @@ double stable_mechanics_step(const State& s, double safety) {
       double k = thickness * (m.lambda + 2.0 * m.mu) * edge[a] * perimeter / (2.0 * s.triangles.area0[e]);
       for (int slot = 0; slot < 2; ++slot)
         if (n.joint_slot[2 * (i + a) + slot] != kNoIndex) k += m.penalty * thickness;  // row sum ~ p t
+      k += contact_stiffness_bound(s);  // any corner may come to lie on a crack face
       omega2_max = std::max(omega2_max, k / n.m[i + a]);
     }
   }

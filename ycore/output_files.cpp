@@ -45,8 +45,8 @@ const std::vector<std::string> kSeriesColumns = {
     "time_s", "mean_moisture", "water_lost_kg", "water_balance_error", "crack_count",
     "mean_crack_width_m", "total_crack_width_m", "mean_crack_length_m",
     "right_end_displacement_m", "kinetic_energy_J", "relaxation_residual", "broken_joints",
-    "elastic_energy_J", "joint_work_J", "fracture_energy_J", "external_work_J", "gravity_work_J",
-    "mechanical_steps"};
+    "elastic_energy_J", "joint_work_J", "fracture_energy_J", "contact_work_J", "external_work_J",
+    "gravity_work_J", "mechanical_steps"};
 
 std::string format_double(double v) {
   if (std::isnan(v)) return "nan";

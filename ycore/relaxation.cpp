@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "ycore/blocked_sum.h"
+#include "ycore/contact.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
 
@@ -24,11 +25,14 @@ struct ForceMeasures {
   double ratio() const { return reference2 > 0.0 ? std::sqrt(net2 / reference2) : (net2 > 0.0 ? INFINITY : 0.0); }
 };
 
-// Adds the joint forces to the node forces (through each node's joint slots) and measures.
-ForceMeasures gather_joint_forces(State& s) {
+// Adds the joint and contact forces to the node forces (through each node's joint slots and
+// contact gather list) and measures.
+ForceMeasures gather_interaction_forces(State& s) {
   Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   const std::vector<double>& jf = s.joints.force;
+  const Contact& c = s.contact;
+  const bool contact = !c.gather_offset.empty();
   const auto sums = blocked_sum<4>(n.size(), [&](std::size_t i, std::array<double, 4>& sum) {
     double fx = n.fx[i], fy = n.fy[i];
     sum[1] += fx * fx + fy * fy;
@@ -38,6 +42,11 @@ ForceMeasures gather_joint_forces(State& s) {
       fx += jf[2 * std::size_t(slot)];
       fy += jf[2 * std::size_t(slot) + 1];
     }
+    if (contact)
+      for (index_t k = c.gather_offset[i]; k < c.gather_offset[i + 1]; ++k) {
+        fx += c.pair_force[2 * std::size_t(c.gather_entry[k])];
+        fy += c.pair_force[2 * std::size_t(c.gather_entry[k]) + 1];
+      }
     n.fx[i] = fx;
     n.fy[i] = fy;
     if (!(n.constraint[i] & kFixX)) {
@@ -61,7 +70,8 @@ ForceMeasures gather_joint_forces(State& s) {
 ForceMeasures compute_forces(State& s, double dt) {
   element_forces(s);
   joint_forces(s, dt);
-  return gather_joint_forces(s);
+  contact_forces(s, dt);
+  return gather_interaction_forces(s);
 }
 
 // v += dt f / m with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)), x += v dt.
@@ -115,6 +125,34 @@ void update_reactions(State& s, double coupling_dt) {
   }
 }
 
+// Remembers where the solid starts from (for the gravity work and the velocities).
+void start_motion(State& s) {
+  Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  const std::int64_t nn = std::int64_t(n.size());
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
+  for (std::int64_t i = 0; i < nn; ++i) {
+    mech.x_start[i] = n.x[i];
+    mech.y_start[i] = n.y[i];
+  }
+}
+
+// Books the reactions, the work of the supports and of gravity since start_motion, and the
+// step count.
+void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
+  const Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  update_reactions(s, coupling_dt);
+  const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
+    const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
+    sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
+  });
+  mech.gravity_work_J += gravity[0];
+  mech.steps += std::uint64_t(result.steps);
+  mech.last_residual = result.residual;
+  if (result.capped) ++mech.capped_relaxations;
+}
+
 }  // namespace
 
 RelaxationResult relax(State& s, const RelaxationControls& controls, double coupling_dt) {
@@ -122,12 +160,9 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
   const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
-  for (std::int64_t i = 0; i < nn; ++i) {
-    n.vx[i] = n.vy[i] = 0.0;  // quasi-static: every relaxation starts at rest
-    mech.x_start[i] = n.x[i];
-    mech.y_start[i] = n.y[i];
-  }
+  start_motion(s);
+  std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
+  std::fill(n.vy.begin(), n.vy.end(), 0.0);
   move_driven_nodes(s, coupling_dt, dt);
   ForceMeasures measures = compute_forces(s, dt);
   for (const index_t i : mech.driven_node) n.vx[i] = n.vy[i] = 0.0;
@@ -149,22 +184,33 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     result.residual = measures.ratio();
   }
   result.capped = !balanced(measures);
-  update_reactions(s, coupling_dt);
-
-  const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
-    const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
-    sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
-  });
-  mech.gravity_work_J += gravity[0];
+  finish_motion(s, result, coupling_dt);
+  // The velocities of the moisture clock: displacement over the coupling step.
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
 #pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
     n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;
   }
-  mech.steps += std::uint64_t(result.steps);
-  mech.last_residual = result.residual;
-  if (result.capped) ++mech.capped_relaxations;
+  return result;
+}
+
+RelaxationResult move_dynamically(State& s, double coupling_dt) {
+  const Mechanics& mech = s.mechanics;
+  start_motion(s);
+  RelaxationResult result;
+  // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
+  ForceMeasures measures = compute_forces(s, 0.0);
+  const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
+  const double dt = coupling_dt / double(substeps);
+  for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
+    move_driven_nodes(s, dt, dt);
+    integrate_nodes(s, 0.0, dt);
+    measures = compute_forces(s, dt);
+    ++result.steps;
+  }
+  result.residual = measures.ratio();
+  finish_motion(s, result, coupling_dt);
   return result;
 }
 

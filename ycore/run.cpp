@@ -14,6 +14,7 @@
 #include "ycore/output_files.h"
 #include "ycore/progress.h"
 #include "ycore/vtk_output.h"
+#include "ycore/contact.h"
 #include "ycore/mechanics.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
@@ -79,7 +80,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
   const double broken = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
   row.insert(row.end(), {double(cracks.count), cracks.mean_width_m, cracks.total_width_m, cracks.mean_length_m,
                          right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
-                         e.joint_work_J, e.fracture_J, e.external_work_J, e.gravity_work_J,
+                         e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
                          double(s.mechanics.steps)});
   return row;
 }
@@ -115,6 +116,20 @@ void append_reactions(std::ostringstream& csv, const State& s) {
   }
 }
 
+// Step 4 of the loop, after joints broke: the corners are tied anew, the moisture nodes split
+// across the broken joints (water is conserved), and their faces become contact surfaces.
+void split_across_broken_joints(State& s, const Deck& deck) {
+  if (any_moisture(s)) {
+    const std::vector<index_t> old_mnode = s.nodes.mnode;
+    const std::vector<double> old_w = s.moisture.w;
+    group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
+    remap_moisture_nodes(s, deck, old_mnode, old_w);
+  } else {
+    tie_corners(s.joints, s.nodes);
+  }
+  refresh_contact_surfaces(s);
+}
+
 }  // namespace
 
 State setup_state(const Deck& deck) {
@@ -130,8 +145,10 @@ State setup_state(const Deck& deck) {
   if (deck.mechanics) {
     init_mechanics(s, deck);
     update_shrinkage_strain(s);
-    relax(s, relaxation_controls(deck), 0.0);  // the initial equilibrium
-    commit_joint_damage(s);
+    if (!deck.dynamic) {  // a dynamic run starts at rest in the mesh's geometry
+      relax(s, relaxation_controls(deck), 0.0);  // the initial equilibrium
+      if (commit_joint_damage(s) > 0) split_across_broken_joints(s, deck);
+    }
   }
   return s;
 }
@@ -149,15 +166,14 @@ bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   s.mechanics.unrelaxed_s += dt;
   if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
   update_shrinkage_strain(s);
-  relax(s, relaxation_controls(deck), s.mechanics.unrelaxed_s);
+  if (deck.dynamic)
+    move_dynamically(s, s.mechanics.unrelaxed_s);
+  else
+    relax(s, relaxation_controls(deck), s.mechanics.unrelaxed_s);
   s.mechanics.unrelaxed_s = 0.0;
-  if (commit_joint_damage(s) == 0 || !any_moisture(s)) return false;
-  // Step 4: the moisture nodes split across the joints that broke; water is conserved.
-  const std::vector<index_t> old_mnode = s.nodes.mnode;
-  const std::vector<double> old_w = s.moisture.w;
-  group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
-  remap_moisture_nodes(s, deck, old_mnode, old_w);
-  return true;
+  if (commit_joint_damage(s) == 0) return false;
+  split_across_broken_joints(s, deck);
+  return any_moisture(s);
 }
 
 double advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
@@ -205,7 +221,10 @@ int run(const RunOptions& opt) {
           << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
           << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
           << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
-          << " steps, residual " << state.mechanics.last_residual;
+          << " steps, residual " << state.mechanics.last_residual << "; contact penalty "
+          << state.contact.penalty_pa << " Pa, damping " << state.contact.damping_ratio << " of critical, "
+          << state.contact.surface_edge.size() << " surface edges"
+          << (deck.dynamic ? "; dynamic: the solid moves in real time" : "");
   log.info(steps.str() + "; output to " + outdir);
 
   FrameSeries frames{outdir, deck.name, {}, {}};

@@ -21,6 +21,10 @@ constexpr index_t kNoIndex = std::numeric_limits<index_t>::max();
 
 inline index_t corner_node(index_t triangle, int corner) { return 3 * triangle + corner; }
 inline index_t triangle_of(index_t node) { return node / 3; }
+// The corner after `node` counter-clockwise in its triangle: edge node -> next_corner(node),
+// and the one before it.
+inline index_t next_corner(index_t node) { return node % 3 == 2 ? node - 2 : node + 1; }
+inline index_t previous_corner(index_t node) { return node % 3 == 0 ? node + 2 : node - 1; }
 
 struct Nodes {                    // [3 * triangles] each
   std::vector<double> x0, y0;     // initial position, m
@@ -35,6 +39,9 @@ struct Nodes {                    // [3 * triangles] each
   // of its triangle, so at most two); kNoIndex where there is none. Joint forces are
   // gathered through it, so no node is written by two threads.
   std::vector<index_t> joint_slot;
+  // The lowest corner tied to this one through intact joints (ycrack, after every breakage):
+  // corners of one tie group are one material point, and never in contact with each other.
+  std::vector<index_t> tie_group;
   std::size_t size() const { return x0.size(); }
 };
 constexpr std::uint8_t kFixX = 1, kFixY = 2;
@@ -125,6 +132,33 @@ struct MechanicsBoundary {
   double work_J = 0;            // work done on the solid through this boundary since t = 0
 };
 
+// Penalty contact between surface edges (DESIGN section 4, ycore/contact.h): node-to-edge in
+// both directions, Coulomb friction as an elastic slip capped at mu f_n.
+struct Contact {
+  double penalty_pa = 0;              // normal penalty p_n, Pa: a node pressed a depth g into
+                                      // an edge carries p_n t g / 2 per surface edge of its own
+                                      // (a closed joint's traction p g / l over half its length)
+  std::vector<double> tan_friction;   // [materials^2] mu of each material pair
+  double damping_ratio = 0;           // normal dashpot, fraction of critical
+  double buffer_m = 0;                // candidates are kept within 2 buffers; rebuilt when a
+                                      // surface node has moved more than one
+  // Surfaces, rebuilt when joints break: triangle edges with no joint or a broken one. An
+  // edge is named by its first corner c, and runs counter-clockwise to next_corner(c).
+  std::vector<index_t> surface_edge;  // first corners, ascending
+  std::vector<index_t> surface_node;  // corners on a surface edge, ascending
+  std::vector<std::uint8_t> is_surface_edge;   // [nodes] whether the edge it starts is one
+  // Candidate pairs (node, surface edge), sorted by node then edge, from the broad phase.
+  std::vector<index_t> pair_node, pair_edge;
+  std::vector<index_t> node_pairs;    // CSR: pairs of the k-th distinct node start at node_pairs[k]
+  std::vector<double> pair_slip;      // elastic tangential slip of the pair, m (friction history)
+  std::vector<double> pair_force;     // [6 * pairs] scratch: force on the node, edge a, edge b
+  std::vector<index_t> gather_offset; // [nodes + 1] CSR into gather_entry: the pair forces a
+  std::vector<index_t> gather_entry;  //   node receives, as 3 pair + slot (0 node, 1 a, 2 b)
+  std::vector<double> x_built, y_built;  // [surface nodes] positions at the last build
+  double work_J = 0;                  // work done on the solid by contact forces since t = 0
+  std::uint64_t builds = 0;
+};
+
 // Relaxation scratch and the solid's energy bookkeeping.
 struct Mechanics {
   double thickness_m = 1;                 // out-of-plane
@@ -151,6 +185,7 @@ struct State {
   MoistureElements moisture_elements;
   WaterBalance water;
   Mechanics mechanics;
+  Contact contact;
   std::vector<MechanicsBoundary> mechanics_boundaries;
   std::vector<MaterialModel> materials;                    // by material id
   std::vector<std::string> material_names;                 // material id -> deck name

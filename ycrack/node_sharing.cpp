@@ -6,10 +6,10 @@
 
 namespace ydry {
 
-index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_t>& has_moisture,
-                             Nodes& nodes, MoistureNodes& moisture) {
+void tie_corners(const Joints& joints, Nodes& nodes) {
   const index_t ncorners = static_cast<index_t>(nodes.size());
-  std::vector<index_t> parent(ncorners);
+  std::vector<index_t>& parent = nodes.tie_group;
+  parent.resize(ncorners);
   std::iota(parent.begin(), parent.end(), index_t(0));
   for (std::size_t j = 0; j < joints.size(); ++j) {
     if (joints.broken[j]) continue;
@@ -17,6 +17,15 @@ index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_
     unite(parent, n[0], n[3]);
     unite(parent, n[1], n[2]);
   }
+  // Every parent is smaller than its child (the smaller root wins), so in ascending order each
+  // corner's parent already points at its root.
+  for (index_t c = 0; c < ncorners; ++c) parent[c] = parent[parent[c]];
+}
+
+index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_t>& has_moisture,
+                             Nodes& nodes, MoistureNodes& moisture) {
+  tie_corners(joints, nodes);
+  const index_t ncorners = static_cast<index_t>(nodes.size());
 
   index_t count = 0;
   std::vector<index_t> root_id(ncorners, kNoIndex);
@@ -25,7 +34,7 @@ index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_
       nodes.mnode[c] = kNoIndex;
       continue;
     }
-    const index_t r = find_root(parent, c);
+    const index_t r = nodes.tie_group[c];
     if (root_id[r] == kNoIndex) root_id[r] = count++;
     nodes.mnode[c] = root_id[r];
   }

@@ -1,0 +1,40 @@
+// Penalty contact with Coulomb friction between the surfaces of the solid (DESIGN section 4).
+//
+// Surfaces are the triangle edges with no joint (the mesh boundary, faces between two
+// materials) and both faces of every broken joint. Each surface corner is tested against
+// each surface edge near it (node to edge, and so both ways round: two faces pressed together
+// push on each other symmetrically), except the edges of its own triangle and edges with an
+// end in its own tie group, so corners still held by intact joints never touch. A corner
+// pressed a depth g into an edge is pushed out along the edge's normal by p_n t g / 2 per
+// surface edge of its own, and the reaction goes to the edge's ends by the linear weights of
+// its projection, so every contact conserves linear momentum. Friction is an elastic slip,
+// stiffness that of the normal penalty, capped at mu f_n (mu per material pair).
+//
+// The broad phase is a cell list of surface corners, rebuilt when one of them has moved more
+// than a buffer since the last build; it keeps the (corner, edge) pairs closer than two
+// buffers, so no contact can start between two builds unseen.
+#pragma once
+
+#include "ycore/deck.h"
+#include "ycore/state.h"
+
+namespace ydry {
+
+// Penalty, friction table and buffer from the deck, then the surfaces (needs
+// nodes.tie_group). Called by init_mechanics.
+void init_contact(State& state, const Deck& deck);
+
+// Rebuilds the surfaces after joints broke (nodes.tie_group must be current) and forces a
+// broad phase at the next force evaluation. Friction history of pairs that survive is kept.
+void refresh_contact_surfaces(State& state);
+
+// Contact forces at the current positions into contact.pair_force (gathered per node through
+// contact.gather_offset/gather_entry), the friction slip advanced by the relative velocity
+// x dt, and the work done on the contacts over the step into contact.work_J. Runs the broad
+// phase first when a surface corner has moved more than the buffer.
+void contact_forces(State& state, double dt);
+
+// Upper bound of the stiffness one node can get from contact, N/m (for the stable step).
+double contact_stiffness_bound(const State& state);
+
+}  // namespace ydry

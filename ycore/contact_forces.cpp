@@ -1,0 +1,122 @@
+// The contact force kernel (see ycore/contact.h). One pass over the corners that have
+// candidate pairs; each writes only its own pairs' forces and slips, so the result is the
+// same on any number of threads.
+#include <cmath>
+
+#include "ycore/blocked_sum.h"
+#include "ycore/contact.h"
+#include "ycore/contact_search.h"
+
+namespace ydry {
+namespace {
+
+// A corner against one edge: where it projects (0..1 from the edge's first corner) and how
+// far it lies outside (negative: inside the edge's triangle), with the edge's unit tangent.
+struct EdgeProjection {
+  double along = 0, gap = 0, length = 0, tx = 0, ty = 0;
+};
+
+EdgeProjection project(const Nodes& n, index_t i, index_t e) {
+  const index_t f = next_corner(e);
+  EdgeProjection p;
+  const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
+  p.length = std::hypot(ex, ey);
+  p.tx = ex / p.length, p.ty = ey / p.length;
+  const double dx = n.x[i] - n.x[e], dy = n.y[i] - n.y[e];
+  p.along = (dx * p.tx + dy * p.ty) / p.length;
+  p.gap = dx * p.ty - dy * p.tx;  // along the outward normal (ty, -tx) of a CCW edge
+  return p;
+}
+
+// The outward normal of a surface corner: the sum of its surface edges' outward normals.
+void corner_normal(const Nodes& n, const Contact& c, index_t i, double& nx, double& ny) {
+  nx = ny = 0.0;
+  for (const index_t e : {previous_corner(i), i}) {
+    if (!c.is_surface_edge[e]) continue;
+    const index_t f = next_corner(e);
+    const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e], length = std::hypot(ex, ey);
+    nx += ey / length, ny -= ex / length;
+  }
+}
+
+// In contact: the corner projects onto the edge and lies inside, less than half the edge's
+// length deep (deeper, it is a corner of the far side of a thin body), and its own surface
+// faces the edge (within 60 degrees of head-on: a corner of a flat surface that a block's
+// side sweeps over is touched by the block's bottom, not its side).
+bool touches(const EdgeProjection& p, double nx, double ny) {
+  const double facing = nx * p.ty - ny * p.tx;  // corner normal . edge normal (ty, -tx)
+  return p.along >= 0.0 && p.along <= 1.0 && p.gap < 0.0 && p.gap > -0.5 * p.length &&
+         facing < -0.5 * std::hypot(nx, ny);
+}
+
+}  // namespace
+
+void contact_forces(State& s, double dt) {
+  Contact& c = s.contact;
+  if (c.penalty_pa <= 0.0) return;
+  if (contact_pairs_stale(s)) build_contact_pairs(s);
+  const Nodes& n = s.nodes;
+  const std::size_t nm = s.material_names.size();
+  const double half_penalty = 0.5 * c.penalty_pa * s.mechanics.thickness_m;
+  const double damping = 2.0 * c.damping_ratio;
+  const std::size_t corners = c.node_pairs.size() - 1;
+  const auto work = blocked_sum<1>(corners, [&](std::size_t k, std::array<double, 1>& sum) {
+    const index_t first = c.node_pairs[k], last = c.node_pairs[k + 1];
+    const index_t i = c.pair_node[first];
+    // Of the edges it touches, the one it is least deep in: the surface it came through (at a
+    // junction of two edges either one, once).
+    index_t active = last;
+    EdgeProjection at;
+    double nx, ny;
+    corner_normal(n, c, i, nx, ny);
+    for (index_t p = first; p < last; ++p) {
+      const EdgeProjection q = project(n, i, c.pair_edge[p]);
+      if (touches(q, nx, ny) && (active == last || q.gap > at.gap)) active = p, at = q;
+    }
+    // Work done on the contacts over the step: the trapezoid of the forces before and after.
+    const auto power = [&](index_t p) {
+      const double* force = &c.pair_force[6 * std::size_t(p)];
+      const index_t receivers[3] = {i, c.pair_edge[p], next_corner(c.pair_edge[p])};
+      double sum_fv = 0.0;
+      for (int k = 0; k < 3; ++k) sum_fv += force[2 * k] * n.vx[receivers[k]] + force[2 * k + 1] * n.vy[receivers[k]];
+      return sum_fv;
+    };
+    for (index_t p = first; p < last; ++p) {
+      sum[0] -= 0.5 * power(p) * dt;
+      for (int d = 0; d < 6; ++d) c.pair_force[6 * std::size_t(p) + d] = 0.0;
+      if (p != active) c.pair_slip[p] = 0.0;  // out of contact: no friction history
+    }
+    if (active == last) return;
+
+    const index_t e = c.pair_edge[active], f = next_corner(e);
+    const double stiffness = half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
+    const double a = 1.0 - at.along, b = at.along;                    // shares of e and f
+    const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
+    // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
+    // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
+    // is zero at rest, so equilibria do not depend on it.
+    const double mass = std::max(n.m[i], 0.5 * (n.m[e] + n.m[f]));
+    const double approach = vx * at.ty - vy * at.tx;                  // < 0: closing
+    const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
+    // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
+    // motion and slides, keeping the stretch at the cap, once it would pull harder than mu f_n.
+    double& slip = c.pair_slip[active];
+    slip += (vx * at.tx + vy * at.ty) * dt;
+    const double cap = c.tan_friction[s.triangles.material[triangle_of(i)] * nm +
+                                      s.triangles.material[triangle_of(e)]] * normal;
+    double tangential = -stiffness * slip;
+    if (std::fabs(tangential) > cap) {
+      tangential = std::copysign(cap, tangential);
+      slip = -tangential / stiffness;
+    }
+    const double fx = normal * at.ty + tangential * at.tx, fy = -normal * at.tx + tangential * at.ty;
+    double* force = &c.pair_force[6 * std::size_t(active)];
+    force[0] = fx, force[1] = fy;
+    force[2] = -a * fx, force[3] = -a * fy;
+    force[4] = -b * fx, force[5] = -b * fy;
+    sum[0] -= 0.5 * power(active) * dt;
+  });
+  c.work_J += work[0];
+}
+
+}  // namespace ydry
