@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Install the Debian 12 packages ydry needs (DESIGN section 7). Idempotent: installs only
 # what is missing, and runs `apt-get update` first when anything is.
-#   scripts/install-deps.sh                  build, test and plotting dependencies
-#   scripts/install-deps.sh --with-paraview  also the ParaView GUI and xvfb
+#   scripts/install-deps.sh                  build, test, plotting and rendering dependencies
+#   scripts/install-deps.sh --with-paraview  also the ParaView GUI
 set -euo pipefail
 
 packages=(
@@ -10,12 +10,13 @@ packages=(
   libeigen3-dev libmetis-dev libvtk9-dev catch2 libtomlplusplus-dev libcli11-dev
   gmsh
   python3 python3-numpy python3-matplotlib python3-vtk9
+  xvfb  # Debian's VTK renders through X only: scripts/render_frame.py runs under xvfb-run
 )
 for arg in "$@"; do
   case "$arg" in
     # Debian 12's python3-paraview (pvpython) conflicts with python3-vtk9, which libvtk9-dev
-    # needs: installing it removes the build dependencies. Only the GUI and xvfb come here.
-    --with-paraview) packages+=(paraview xvfb) ;;
+    # needs: installing it removes the build dependencies. Only the GUI comes here.
+    --with-paraview) packages+=(paraview) ;;
     -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac

@@ -1,9 +1,10 @@
 """Shared helpers for the verification check scripts.
 
-Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, read
-the last frame of a run, and print the suite verdict lines `CASE METRIC VALUE TOLERANCE
-PASS|FAIL` while remembering whether any failed. Used by shrinkage, fracture_modeI and
-fracture_modeII (strip1d keeps its own copy).
+Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, list
+the frames of its .pvd and read them (the last one as arrays), and print the suite verdict
+lines `CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
+shrinkage, fracture_modeI and fracture_modeII (strip1d keeps its own copy), and for reading
+frames by scripts/render_frame.py.
 """
 import argparse
 import json
@@ -62,15 +63,28 @@ def reactions(outdir, boundary):
     return {name: column[rows] for name, column in table.items() if name != "boundary"}
 
 
-def _last_grid(outdir, part):
-    """The last .vtu of one part of the run's .pvd (part 0: the solid, part 1: the cracks)."""
-    outdir = Path(outdir)
-    pvd = next(outdir.glob("*.pvd"))
-    files = [ds.get("file") for ds in ET.parse(pvd).getroot().iter("DataSet") if ds.get("part") == str(part)]
+def frames(pvd):
+    """The frames of a run's .pvd in time order: {time in s: {part: path of its .vtu}}
+    (part 0: the solid, part 1: the cracks)."""
+    pvd = Path(pvd)
+    found = {}
+    for ds in ET.parse(pvd).getroot().iter("DataSet"):
+        found.setdefault(float(ds.get("timestep")), {})[int(ds.get("part"))] = pvd.parent / ds.get("file")
+    return dict(sorted(found.items()))
+
+
+def read_grid(path):
+    """One .vtu file as a vtkUnstructuredGrid."""
     reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(str(outdir / files[-1]))
+    reader.SetFileName(str(path))
     reader.Update()
     return reader.GetOutput()
+
+
+def _last_grid(outdir, part):
+    """One part of the last frame of the run's .pvd (part 0: the solid, part 1: the cracks)."""
+    pvd = next(Path(outdir).glob("*.pvd"))
+    return read_grid(list(frames(pvd).values())[-1][part])
 
 
 def _cell_arrays(grid):
