@@ -10,6 +10,8 @@
 namespace ydry {
 namespace {
 
+constexpr double kFacing = 0.17;  // cos 80 degrees
+
 // A corner against one edge: where it projects (0..1 from the edge's first corner) and how
 // far it lies outside (negative: inside the edge's triangle), with the edge's unit tangent.
 struct EdgeProjection {
@@ -28,25 +30,22 @@ EdgeProjection project(const Nodes& n, index_t i, index_t e) {
   return p;
 }
 
-// The outward normal of a surface corner: the sum of its surface edges' outward normals.
-void corner_normal(const Nodes& n, const Contact& c, index_t i, double& nx, double& ny) {
-  nx = ny = 0.0;
+// In contact: the corner projects onto the edge and lies inside, less than half the edge's
+// length deep (deeper, it is a corner of the far side of a thin body), and one of its own
+// surface edges faces the edge within 80 degrees of head-on. (A corner of a flat surface that
+// a block's corner slides over lies, by the penalty's give, just inside the block's side
+// too; its own surface is at right angles to that side, and the block's bottom, which it
+// does face, carries the contact.)
+bool touches(const Nodes& n, const Contact& c, index_t i, const EdgeProjection& p) {
+  if (!(p.along >= 0.0 && p.along <= 1.0 && p.gap < 0.0 && p.gap > -0.5 * p.length)) return false;
   for (const index_t e : {previous_corner(i), i}) {
     if (!c.is_surface_edge[e]) continue;
     const index_t f = next_corner(e);
-    const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e], length = std::hypot(ex, ey);
-    nx += ey / length, ny -= ex / length;
+    const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
+    // Own outward normal (ey, -ex) / |e| against the edge's (ty, -tx).
+    if (ey * p.ty + ex * p.tx < -kFacing * std::hypot(ex, ey)) return true;
   }
-}
-
-// In contact: the corner projects onto the edge and lies inside, less than half the edge's
-// length deep (deeper, it is a corner of the far side of a thin body), and its own surface
-// faces the edge (within 60 degrees of head-on: a corner of a flat surface that a block's
-// side sweeps over is touched by the block's bottom, not its side).
-bool touches(const EdgeProjection& p, double nx, double ny) {
-  const double facing = nx * p.ty - ny * p.tx;  // corner normal . edge normal (ty, -tx)
-  return p.along >= 0.0 && p.along <= 1.0 && p.gap < 0.0 && p.gap > -0.5 * p.length &&
-         facing < -0.5 * std::hypot(nx, ny);
+  return false;
 }
 
 }  // namespace
@@ -67,11 +66,9 @@ void contact_forces(State& s, double dt) {
     // junction of two edges either one, once).
     index_t active = last;
     EdgeProjection at;
-    double nx, ny;
-    corner_normal(n, c, i, nx, ny);
     for (index_t p = first; p < last; ++p) {
       const EdgeProjection q = project(n, i, c.pair_edge[p]);
-      if (touches(q, nx, ny) && (active == last || q.gap > at.gap)) active = p, at = q;
+      if (touches(n, c, i, q) && (active == last || q.gap > at.gap)) active = p, at = q;
     }
     // Work done on the contacts over the step: the trapezoid of the forces before and after.
     const auto power = [&](index_t p) {

@@ -97,7 +97,6 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   j.integer("joints", static_cast<long long>(s.joints.size()));
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
   j.integer("moisture_steps", static_cast<long long>(s.moisture_steps));
-  j.integer("mechanical_steps", static_cast<long long>(s.mechanics.steps));
   j.boolean("completed", completed);
   return j;
 }

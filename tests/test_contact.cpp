@@ -1,0 +1,165 @@
+// Contact: two triangles whose common joint broke press on each other through their faces;
+// with the joint intact they never touch.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "tests/test_support.h"
+#include "ycore/contact.h"
+#include "ycore/run.h"
+#include "ycrack/node_sharing.h"
+
+using namespace ydry;
+
+namespace {
+
+constexpr double kPenalty = 1.0e7, kThickness = 0.5;
+
+// One 1 mm cell cut by its diagonal: two triangles tied by one joint, no gravity.
+State two_triangles(ydry_test::TempDir& dir) {
+  ydry_test::write_text(dir.file("pair.toml"), R"(
+[run]
+name = "pair"
+thickness = 0.5
+end_time = 1.0
+output_interval = 1.0
+gravity = [0.0, 0.0]
+[mesh]
+generator = "rectangle"
+size = [0.001, 0.001]
+element_size = 0.001
+pattern = "right"
+material = "soil"
+[materials.soil]
+density = 1000.0
+young = 1.0e6
+poisson = 0.25
+tensile_strength = 1.0e4
+cohesion = 2.0e4
+friction_angle = 30.0
+gf_I = 1.0
+gf_II = 3.0
+[contact]
+penalty = 1.0e7
+friction = { soil_soil = 30.0 }
+)");
+  State s = setup_state(load_deck(dir.file("pair.toml"), {}));
+  REQUIRE(s.joints.size() == 1);
+  return s;
+}
+
+void break_joint(State& s) {
+  s.joints.broken[0] = 1;
+  tie_corners(s.joints, s.nodes);
+  refresh_contact_surfaces(s);
+}
+
+// The joint's face on its first triangle: from node 0 to node 1, outward normal (ty, -tx).
+struct Face { double tx, ty, length; };
+Face first_face(const State& s) {
+  const index_t a = s.joints.node[0], b = s.joints.node[1];
+  const double ex = s.nodes.x[b] - s.nodes.x[a], ey = s.nodes.y[b] - s.nodes.y[a];
+  const double length = std::hypot(ex, ey);
+  return {ex / length, ey / length, length};
+}
+
+// Moves the second triangle (nodes 2 and 3 of the joint are two of its corners) by (dx, dy).
+void move_second_triangle(State& s, double dx, double dy) {
+  const index_t t = triangle_of(s.joints.node[2]);
+  for (int a = 0; a < 3; ++a) {
+    s.nodes.x[corner_node(t, a)] += dx;
+    s.nodes.y[corner_node(t, a)] += dy;
+  }
+}
+
+// The force on `corner` from its own contact (slot 0 of its active pair), as (normal to
+// the face, along the face).
+std::pair<double, double> pressed_corner_force(const State& s, index_t corner, const Face& face) {
+  const Contact& c = s.contact;
+  double fx = 0, fy = 0;
+  for (std::size_t p = 0; p < c.pair_node.size(); ++p)
+    if (c.pair_node[p] == corner) fx += c.pair_force[6 * p], fy += c.pair_force[6 * p + 1];
+  return {fx * face.ty - fy * face.tx, fx * face.tx + fy * face.ty};
+}
+
+// Contact force on every node (the gather of the relaxation, contact only).
+std::vector<double> contact_force_on_nodes(const State& s) {
+  const Contact& c = s.contact;
+  std::vector<double> f(2 * s.nodes.size(), 0.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    for (index_t k = c.gather_offset[i]; k < c.gather_offset[i + 1]; ++k)
+      for (int d = 0; d < 2; ++d) f[2 * i + d] += c.pair_force[2 * std::size_t(c.gather_entry[k]) + d];
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("two triangles pressed through a broken joint's faces: p_n t g per corner, momentum conserved",
+          "[contact]") {
+  ydry_test::TempDir dir;
+  State s = two_triangles(dir);
+  break_joint(s);
+  const Face face = first_face(s);
+  // Slide the second triangle 10 % along the face and press it 1 um into the first: its
+  // corner at the face's start (joint node 3) now lies inside the first triangle's face.
+  const double depth = 1.0e-6;
+  move_second_triangle(s, 0.1 * face.length * face.tx - depth * face.ty, 0.1 * face.length * face.ty + depth * face.tx);
+  contact_forces(s, 0.0);
+  const std::vector<double> f = contact_force_on_nodes(s);
+
+  double sum_x = 0, sum_y = 0, largest = 0;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    sum_x += f[2 * i], sum_y += f[2 * i + 1];
+    largest = std::max(largest, std::hypot(f[2 * i], f[2 * i + 1]));
+  }
+  CHECK(largest > 0.0);
+  CHECK(std::fabs(sum_x) <= 1e-12 * largest);
+  CHECK(std::fabs(sum_y) <= 1e-12 * largest);
+  // The pressed corner has two surface edges: p_n t / 2 each, pushing it out along the normal.
+  // (The first triangle's corner at the face's end is pressed into the second's face too.)
+  const auto [normal, tangential] = pressed_corner_force(s, s.joints.node[3], face);
+  const double expected = kPenalty * kThickness * depth;
+  CHECK(normal == Approx(expected).epsilon(1e-9));
+  CHECK(std::fabs(tangential) <= 1e-12 * expected);  // no friction at rest
+}
+
+TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(phi) x the normal force",
+          "[contact]") {
+  ydry_test::TempDir dir;
+  State s = two_triangles(dir);
+  break_joint(s);
+  const Face face = first_face(s);
+  const double depth = 1.0e-6;
+  move_second_triangle(s, 0.1 * face.length * face.tx - depth * face.ty, 0.1 * face.length * face.ty + depth * face.tx);
+  // The second triangle slides along the face at 1 mm/s; each step of 1e-6 s slips 1 nm.
+  const index_t t = triangle_of(s.joints.node[2]);
+  for (int a = 0; a < 3; ++a) {
+    s.nodes.vx[corner_node(t, a)] = 1e-3 * face.tx;
+    s.nodes.vy[corner_node(t, a)] = 1e-3 * face.ty;
+  }
+  const index_t corner = s.joints.node[3];
+  const double normal = kPenalty * kThickness * depth, cap = std::tan(30.0 * M_PI / 180.0) * normal;
+  contact_forces(s, 1e-6);  // one step: the elastic slip of 1 nm is below the cap
+  CHECK(pressed_corner_force(s, corner, face).second == Approx(-kPenalty * kThickness * 1e-9).epsilon(1e-6));
+  for (int step = 0; step < 1000; ++step) contact_forces(s, 1e-6);  // 1 um more: sliding
+  CHECK(pressed_corner_force(s, corner, face).second == Approx(-cap).epsilon(1e-9));
+  CHECK(pressed_corner_force(s, corner, face).first == Approx(normal).epsilon(1e-9));
+  CHECK(s.contact.work_J > 0.0);  // friction took work out of the sliding
+}
+
+TEST_CASE("no contact force between triangles still tied by an intact joint, however they overlap",
+          "[contact]") {
+  ydry_test::TempDir dir;
+  State s = two_triangles(dir);
+  const Face face = first_face(s);
+  move_second_triangle(s, 0.1 * face.length * face.tx - 1e-5 * face.ty, 0.1 * face.length * face.ty + 1e-5 * face.tx);
+  contact_forces(s, 0.0);
+  for (const double f : contact_force_on_nodes(s)) CHECK(f == 0.0);
+  // Both triangles' corners are surface corners (three outer edges each), yet no pair
+  // joins corners of one tie group.
+  for (std::size_t p = 0; p < s.contact.pair_node.size(); ++p) {
+    const index_t i = s.contact.pair_node[p], e = s.contact.pair_edge[p];
+    CHECK(s.nodes.tie_group[i] != s.nodes.tie_group[e]);
+    CHECK(s.nodes.tie_group[i] != s.nodes.tie_group[next_corner(e)]);
+  }
+}
