@@ -1,9 +1,9 @@
 """Shared helpers for the verification check scripts.
 
 Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, read
-the last frame of a run, and print the suite verdict lines `CASE METRIC VALUE TOLERANCE
-PASS|FAIL` while remembering whether any failed. Used by shrinkage, fracture_modeI and
-fracture_modeII (strip1d keeps its own copy).
+the frames of a run, and print the suite verdict lines `CASE METRIC VALUE TOLERANCE
+PASS|FAIL` while remembering whether any failed. Used by shrinkage, fracture_modeI,
+fracture_modeII and crack_moisture (strip1d keeps its own copy).
 """
 import argparse
 import json
@@ -62,15 +62,26 @@ def reactions(outdir, boundary):
     return {name: column[rows] for name, column in table.items() if name != "boundary"}
 
 
-def _last_grid(outdir, part):
-    """The last .vtu of one part of the run's .pvd (part 0: the solid, part 1: the cracks)."""
+def frame_files(outdir, part=0):
+    """[(time in s, .vtu path)] of one part of the run's .pvd (part 0: the solid, part 1: the
+    cracks), in output order."""
     outdir = Path(outdir)
     pvd = next(outdir.glob("*.pvd"))
-    files = [ds.get("file") for ds in ET.parse(pvd).getroot().iter("DataSet") if ds.get("part") == str(part)]
+    return [(float(ds.get("timestep")), outdir / ds.get("file"))
+            for ds in ET.parse(pvd).getroot().iter("DataSet") if ds.get("part") == str(part)]
+
+
+def read_grid(path):
+    """The vtkUnstructuredGrid of one .vtu file."""
     reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(str(outdir / files[-1]))
+    reader.SetFileName(str(path))
     reader.Update()
     return reader.GetOutput()
+
+
+def _last_grid(outdir, part):
+    """The last .vtu of one part of the run's .pvd."""
+    return read_grid(frame_files(outdir, part)[-1][1])
 
 
 def _cell_arrays(grid):
