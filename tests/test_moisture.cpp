@@ -248,6 +248,7 @@ TEST_CASE("crack faces exchange the same whether the crack is in the deck or bre
   remap_moisture_nodes(s, intact, old_mnode, old_w);
   REQUIRE(expected.moisture.term_kind.size() == 4 * 3);  // three broken joints, four halves each
   CHECK(s.moisture.term_offset == expected.moisture.term_offset);
+  CHECK(s.moisture.term_kind == expected.moisture.term_kind);
   CHECK(s.moisture.term_area == expected.moisture.term_area);
   CHECK(s.moisture.term_rate == expected.moisture.term_rate);
   CHECK(s.moisture.term_level == expected.moisture.term_level);

@@ -15,7 +15,8 @@ void init_moisture(State& state, const Deck& deck);
 
 // After the moisture nodes were regrouped (ycrack, when joints broke): each new node takes
 // the w of the node it was part of, its share of dry mass and of the boundary terms, and the
-// faces of the joints that broke get their exchange terms; the water in the soil is unchanged. old_mnode and old_w are nodes.mnode and moisture.w before.
+// faces of the joints that broke get their exchange terms; the water in the soil is unchanged.
+// old_mnode and old_w are nodes.mnode and moisture.w before.
 void remap_moisture_nodes(State& state, const Deck& deck, const std::vector<index_t>& old_mnode,
                           const std::vector<double>& old_w);
 
