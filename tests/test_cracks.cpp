@@ -18,6 +18,7 @@
 #include "ycore/vtk_output.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
+#include "ycrack/node_sharing.h"
 
 using namespace ydry;
 
@@ -49,11 +50,21 @@ int break_vertical(State& s, double x, double y_from, double y_to) {
   return count;
 }
 
+// The broken joint with the lowest index: the first line of the cracks frame.
+index_t first_broken(const State& s) {
+  index_t joint = 0;
+  while (!s.joints.broken[joint]) ++joint;
+  return joint;
+}
+
+double centroid_x0(const State& s, index_t t) {
+  return (s.nodes.x0[3 * t] + s.nodes.x0[3 * t + 1] + s.nodes.x0[3 * t + 2]) / 3.0;
+}
+
 // Moves every triangle whose centroid lies right of x by dx, rigidly.
 void shift_right_of(State& s, double x, double dx) {
   for (index_t t = 0; t < s.triangles.size(); ++t) {
-    const double cx = (s.nodes.x0[3 * t] + s.nodes.x0[3 * t + 1] + s.nodes.x0[3 * t + 2]) / 3.0;
-    if (cx > x)
+    if (centroid_x0(s, t) > x)
       for (int a = 0; a < 3; ++a) s.nodes.x[corner_node(t, a)] += dx;
   }
 }
@@ -110,9 +121,7 @@ TEST_CASE("an internal crack is measured at its highest vertex", "[crack]") {
   // triangle's side is pulled back along the normal by 50 um.
   State s = rectangle_state();
   REQUIRE(break_vertical(s, 0.02, 0.005, 0.01) == 1);
-  index_t joint = 0;
-  while (!s.joints.broken[joint]) ++joint;
-  const index_t* n = &s.joints.node[4 * joint];
+  const index_t* n = &s.joints.node[4 * first_broken(s)];
   const double nx = s.nodes.y0[n[0]] < s.nodes.y0[n[1]] ? -1.0 : 1.0;  // into the first triangle
   for (const int k : {0, 1}) s.nodes.x[n[k]] += 50e-6 * nx;
   const std::vector<Crack> cracks = find_cracks(s, 0.0);
@@ -159,6 +168,13 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   cracked.triangles.syy.assign(nt, -2.0e3);
   cracked.triangles.sxy.assign(nt, 0.5e3);
   write_frame(series, cracked, 3600.0);
+  // The same cracks with moisture: 0.3 left of the x = 30 mm crack, 0.1 right of it.
+  State wet = two_crack_state();
+  wet.moisture.w.resize(
+      group_moisture_nodes(wet.joints, std::vector<std::uint8_t>(wet.triangles.size(), 1), wet.nodes, wet.moisture));
+  for (index_t c = 0; c < wet.nodes.size(); ++c)
+    wet.moisture.w[wet.nodes.mnode[c]] = centroid_x0(wet, triangle_of(c)) < 0.03 ? 0.3 : 0.1;
+  write_frame(series, wet, 7200.0);
 
   auto empty = read_vtu(dir.file("frames/t_cracks_000000.vtu"));
   CHECK(empty->GetErrorCode() == 0);
@@ -178,6 +194,18 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   CHECK(p[0] == Approx(0.03 + 200e-6 + 40e-6).margin(1e-12));
   CHECK(p[1] == Approx(0.0).margin(1e-12));
   CHECK(grid->GetCellData()->GetArray("slip")->GetTuple1(0) == Approx(0.0).margin(1e-15));
+  REQUIRE(grid->GetCellData()->GetArray("moisture_face1") != nullptr);
+  CHECK(std::isnan(grid->GetCellData()->GetArray("moisture_face1")->GetTuple1(0)));  // no moisture model
+
+  // Each face carries the moisture of its own side: face 1 is the first triangle's edge.
+  auto wet_lines = read_vtu(dir.file("frames/t_cracks_000002.vtu"));
+  vtkDataArray* face1 = wet_lines->GetOutput()->GetCellData()->GetArray("moisture_face1");
+  vtkDataArray* face2 = wet_lines->GetOutput()->GetCellData()->GetArray("moisture_face2");
+  REQUIRE(face1 != nullptr);
+  REQUIRE(face2 != nullptr);
+  const bool face1_left = centroid_x0(wet, triangle_of(wet.joints.node[4 * first_broken(wet)])) < 0.03;
+  CHECK(face1->GetTuple1(0) == (face1_left ? 0.3 : 0.1));
+  CHECK(face2->GetTuple1(0) == (face1_left ? 0.1 : 0.3));
 
   auto bulk = read_vtu(dir.file("frames/t_000001.vtu"));
   vtkDataArray* stress = bulk->GetOutput()->GetCellData()->GetArray("stress");

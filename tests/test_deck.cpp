@@ -122,6 +122,11 @@ TEST_CASE("overrides given with --set reach the run and the resolved deck, defau
   CHECK(ydry_test::read_text(dir.file("out/summary.json")).find("\"elements\": 32") != std::string::npos);
 }
 
+TEST_CASE("an empty array given with --set KEY=[] empties an array of tables", "[deck]") {
+  CHECK(ydry_test::strip_deck().moisture_boundaries.size() == 1);
+  CHECK(ydry_test::strip_deck({"moisture.boundary=[]"}).moisture_boundaries.empty());
+}
+
 TEST_CASE("a non-empty output folder that is not a ydry run is refused without --force", "[deck]") {
   ydry_test::TempDir dir;
   ydry_test::write_text(dir.file("deck.toml"), kGoodDeck);

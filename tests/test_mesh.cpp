@@ -8,7 +8,6 @@
 #include "tests/test_support.h"
 #include "ycore/build_state.h"
 #include "ycore/run.h"
-#include "ycrack/node_sharing.h"
 
 using namespace ydry;
 
@@ -74,28 +73,6 @@ TEST_CASE("the exploded state: 3 nodes per triangle, a joint per interior edge, 
   double dry_mass = 0;
   for (const double m : s.moisture.dry_mass) dry_mass += m;
   CHECK(dry_mass == Approx(1333.0 * 0.1 * 0.01 * 1.0).epsilon(1e-13));
-}
-
-TEST_CASE("a broken joint splits moisture nodes along it, and a crack tip stays one node", "[mesh][crack]") {
-  // 2 x 2 cells of 5 mm: break the joints on x = 5 mm one after the other. The lower one runs
-  // from the bottom boundary to the centre vertex, so its bottom end splits and the centre
-  // (the crack tip, Eq. 14) stays one node; the upper one completes a through crack.
-  const Deck deck = ydry_test::strip_deck({"mesh.size=[0.01, 0.01]"});
-  State s = setup_state(deck);
-  REQUIRE(s.moisture.size() == 9);
-  std::vector<std::uint8_t> wet(s.triangles.size(), 1);
-  std::size_t lower = s.joints.size(), upper = s.joints.size();
-  for (std::size_t j = 0; j < s.joints.size(); ++j) {
-    const index_t* n = &s.joints.node[4 * j];
-    if (s.nodes.x0[n[0]] != 0.005 || s.nodes.x0[n[1]] != 0.005) continue;
-    (std::min(s.nodes.y0[n[0]], s.nodes.y0[n[1]]) == 0.0 ? lower : upper) = j;
-  }
-  REQUIRE(lower < s.joints.size());
-  REQUIRE(upper < s.joints.size());
-  s.joints.broken[lower] = 1;
-  CHECK(group_moisture_nodes(s.joints, wet, s.nodes, s.moisture) == 10);
-  s.joints.broken[upper] = 1;
-  CHECK(group_moisture_nodes(s.joints, wet, s.nodes, s.moisture) == 12);
 }
 
 TEST_CASE("no joints between two materials, and each keeps its own moisture nodes", "[mesh]") {

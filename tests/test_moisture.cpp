@@ -1,5 +1,6 @@
 // The moisture scheme (paper Eqs. 1-8, 20): the per-triangle inflows, the stable step, the
-// water balance, thread invariance, and the 5 mm strip against the closed form.
+// water balance, thread invariance, the 5 mm strip against the closed form, and the exchange
+// through crack faces (Eqs. 10-17).
 #include <catch2/catch.hpp>
 #include <omp.h>
 
@@ -7,10 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "tests/test_support.h"
 #include "ycore/run.h"
 #include "ycore/blocked_sum.h"
+#include "ycrack/node_sharing.h"
+#include "ycrack/precracks.h"
 #include "ymoist/moisture.h"
 
 using namespace ydry;
@@ -162,4 +166,97 @@ TEST_CASE("a joint that breaks splits the moisture nodes: water is conserved and
   CHECK(total_water_kg(s) > total_before * 1.001);          // the left half keeps taking water in
   CHECK(right_half_water() == Approx(right_before).epsilon(1e-12));  // the right half gets none of it
   CHECK(water_balance_error(s) < 1e-12);
+}
+
+namespace {
+
+constexpr double kCrackH = 2.0e-4, kCrackAir = 0.05, kThickness = 0.05;  // h_c, w_e, t
+
+// The strip's material on `size` (TOML, m) of 5 mm cells, 5 cm thick, with no boundary terms
+// but the faces of the deck's [[cracks]] `cracks` (TOML), which exchange with air at
+// w_e = 0.05 with h_c = 2e-4 kg/(m^2 s).
+Deck crack_exchange_deck(const std::string& size, const std::string& cracks) {
+  return strip_deck({"mesh.size=" + size, "run.thickness=0.05", "moisture.boundary=[]", "cracks=" + cracks,
+                     "moisture.cracks.exchange_coefficient=2e-4", "moisture.cracks.air_moisture=0.05"});
+}
+
+// Random w in [0.1, 0.6] at every moisture node.
+void randomize_moisture(State& s) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> uniform(0.1, 0.6);
+  for (double& w : s.moisture.w) w = uniform(rng);
+}
+
+}  // namespace
+
+TEST_CASE("one crack face takes in h_c (w_e - (w1 + w2)/2) L t, half at each end (Eqs. 10-11)", "[moisture][crack]") {
+  // Two cells side by side, split by a crack through the whole height: its one joint has four
+  // distinct end nodes. Face 2 is held at w_e, so only face 1 exchanges.
+  const Deck deck = crack_exchange_deck("[0.01, 0.005]", "[{from=[0.005, 0.0], to=[0.005, 0.005]}]");
+  State s = setup_state(deck);
+  REQUIRE(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1) == 1);
+  const std::size_t j = std::find(s.joints.broken.begin(), s.joints.broken.end(), 1) - s.joints.broken.begin();
+  index_t node[4];
+  for (int k = 0; k < 4; ++k) node[k] = s.nodes.mnode[s.joints.node[4 * j + k]];
+  REQUIRE(std::set<index_t>(node, node + 4).size() == 4);
+  randomize_moisture(s);
+  s.moisture.w[node[2]] = s.moisture.w[node[3]] = kCrackAir;
+  s.water.initial_kg = total_water_kg(s);
+  const double w1 = s.moisture.w[node[0]], w2 = s.moisture.w[node[1]], length = 0.005;
+
+  const double dt = stable_moisture_step(s, 0.9);
+  moisture_step(s, dt);
+  const double face_kg = kCrackH * (kCrackAir - 0.5 * (w1 + w2)) * length * kThickness * dt;  // Eq. 10
+  CHECK(s.moisture.boundary_inflow[node[0]] == Approx(0.5 * kCrackH * (kCrackAir - w1) * length * kThickness).epsilon(1e-15));
+  CHECK(s.moisture.boundary_inflow[node[1]] == Approx(0.5 * kCrackH * (kCrackAir - w2) * length * kThickness).epsilon(1e-15));
+  CHECK(s.moisture.boundary_inflow[node[2]] == 0.0);
+  CHECK(s.moisture.boundary_inflow[node[3]] == 0.0);
+  CHECK(s.water.net_in_kg + s.water.net_in_carry == Approx(face_kg).epsilon(1e-15));
+  CHECK(total_water_kg(s) - s.water.initial_kg == Approx(face_kg).epsilon(1e-12));  // the difference loses digits
+  CHECK(water_balance_error(s) < 1e-15);
+}
+
+TEST_CASE("a crack tip stays one node and takes in through both faces (Eqs. 14-17)", "[moisture][crack]") {
+  // 2 x 2 cells, a crack from the top down to the centre vertex, its tip.
+  const Deck deck = crack_exchange_deck("[0.01, 0.01]", "[{from=[0.005, 0.01], to=[0.005, 0.005]}]");
+  State s = setup_state(deck);
+  std::set<index_t> tip;
+  for (index_t c = 0; c < s.nodes.size(); ++c)
+    if (s.nodes.x0[c] == 0.005 && s.nodes.y0[c] == 0.005) tip.insert(s.nodes.mnode[c]);
+  REQUIRE(tip.size() == 1);
+  const index_t i = *tip.begin();
+  REQUIRE(s.moisture.term_offset[i + 1] - s.moisture.term_offset[i] == 2);  // a half of each face
+  randomize_moisture(s);
+  const double w_tip = s.moisture.w[i];
+  moisture_step(s, stable_moisture_step(s, 0.9));
+  // Eqs. 15-16 with the tip's own w (DESIGN 4): two halves of 5 mm faces.
+  CHECK(s.moisture.boundary_inflow[i] == Approx(kCrackH * (kCrackAir - w_tip) * 0.005 * kThickness).epsilon(1e-15));
+}
+
+TEST_CASE("crack faces exchange the same whether the crack is in the deck or breaks later", "[moisture][crack]") {
+  // The terms are rebuilt when the nodes regroup; the water balance counts them.
+  const std::string crack = "[{from=[0.005, 0.01], to=[0.005, 0.0]}, {from=[0.0, 0.005], to=[0.005, 0.005]}]";
+  const Deck precracked = crack_exchange_deck("[0.01, 0.01]", crack);
+  const Deck intact = crack_exchange_deck("[0.01, 0.01]", "[]");
+  const State expected = setup_state(precracked);
+  State s = setup_state(intact);
+  CHECK(s.moisture.term_kind.empty());
+  const std::vector<index_t> old_mnode = s.nodes.mnode;
+  const std::vector<double> old_w = s.moisture.w;
+  break_joints_along_cracks(s, precracked);
+  group_moisture_nodes(s.joints, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
+  remap_moisture_nodes(s, intact, old_mnode, old_w);
+  REQUIRE(expected.moisture.term_kind.size() == 4 * 3);  // three broken joints, four halves each
+  CHECK(s.moisture.term_offset == expected.moisture.term_offset);
+  CHECK(s.moisture.term_kind == expected.moisture.term_kind);
+  CHECK(s.moisture.term_area == expected.moisture.term_area);
+  CHECK(s.moisture.term_rate == expected.moisture.term_rate);
+  CHECK(s.moisture.term_level == expected.moisture.term_level);
+  CHECK(s.moisture.boundary_node == expected.moisture.boundary_node);
+
+  randomize_moisture(s);
+  s.water.initial_kg = total_water_kg(s);
+  advance_to(s, intact, 1.0e6, stable_moisture_step(s, 0.9));
+  CHECK(std::abs(mean_moisture(s) - kCrackAir) < 1e-3);  // the air in the cracks has drawn the soil to w_e
+  CHECK(water_balance_error(s) < 1e-14);
 }

@@ -3,8 +3,8 @@
 Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, list
 the frames of its .pvd and read them (the last one as arrays), and print the suite verdict
 lines `CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
-shrinkage, fracture_modeI and fracture_modeII (strip1d keeps its own copy), and for reading
-frames by scripts/render_frame.py.
+shrinkage, fracture_modeI, fracture_modeII, crack_moisture and the contact cases (strip1d
+keeps its own copy), and for reading frames by scripts/render_frame.py.
 """
 import argparse
 import json

@@ -71,7 +71,7 @@ struct Joints {                   // one per interior edge inside a material
   std::size_t size() const { return broken.size(); }
 };
 
-// A flux or exchange term of a moisture node: a boundary edge half, later a crack face half.
+// A flux or exchange term of a moisture node: a boundary edge half or a crack face half.
 enum class MoistureTermKind : std::uint8_t { flux, exchange };
 
 struct MoistureNodes {

@@ -171,11 +171,11 @@ class TableReader {
     if (!n->is_table()) fail(n, origin_, key_path(key), std::string("expected a table, got ") + type_name(*n));
     return *n->as_table();
   }
-  // An array of tables, possibly absent.
+  // An array of tables, possibly absent or empty (`--set KEY=[]` removes a deck's entries).
   toml::array* table_array(const std::string& key) {
     toml::node* n = take(key);
     if (!n) return nullptr;
-    if (!n->is_array_of_tables())
+    if (!n->is_array_of_tables() && !(n->is_array() && n->as_array()->empty()))
       fail(n, origin_, key_path(key), std::string("expected an array of tables ([[") + key_path(key) + "]]), got " + type_name(*n));
     return n->as_array();
   }

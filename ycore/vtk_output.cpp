@@ -85,7 +85,7 @@ vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
 }
 
 // One line per broken joint between the midpoints of its node pairs at the two ends, with
-// the mean opening and slip of the ends.
+// the mean opening and slip of the ends and the mean moisture of each face's two corners.
 vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   const Nodes& n = s.nodes;
   vtkIdType nb = 0;
@@ -97,6 +97,8 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   cells->AllocateExact(nb, 2 * nb);
   auto opening = named_array("opening", 1, nb);
   auto slip = named_array("slip", 1, nb);
+  auto face1 = named_array("moisture_face1", 1, nb);  // nodes 0, 1: the first triangle's edge
+  auto face2 = named_array("moisture_face2", 1, nb);  // nodes 2, 3: the second's
   vtkIdType line = 0;
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     if (!s.joints.broken[j]) continue;
@@ -110,6 +112,8 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
     const JointKinematics k = joint_kinematics(n, jn);
     opening->SetValue(line, 0.5 * (k.opening[0] + k.opening[1]));
     slip->SetValue(line, 0.5 * (k.slip[0] + k.slip[1]));
+    face1->SetValue(line, 0.5 * (node_moisture(s, jn[0]) + node_moisture(s, jn[1])));
+    face2->SetValue(line, 0.5 * (node_moisture(s, jn[2]) + node_moisture(s, jn[3])));
     ++line;
   }
   vtkNew<vtkUnstructuredGrid> grid;
@@ -117,6 +121,8 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   grid->SetCells(VTK_LINE, cells);
   grid->GetCellData()->AddArray(opening);
   grid->GetCellData()->AddArray(slip);
+  grid->GetCellData()->AddArray(face1);
+  grid->GetCellData()->AddArray(face2);
   return grid;
 }
 

@@ -19,7 +19,8 @@ struct FrameSeries {
 // displacement, velocity; cell data material, moisture, and stress sxx syy sxy when the
 // state has stresses), frames/NAME_cracks_NNNNNN.vtu (a line per broken joint between the
 // midpoints of its end node pairs; cell data opening and slip, m, the means of the two
-// ends) and rewrites NAME.pvd, which lists both per frame as parts 0 and 1.
+// ends, and moisture_face1 and moisture_face2, the mean moisture of each face's two corners,
+// NaN without moisture) and rewrites NAME.pvd, which lists both per frame as parts 0 and 1.
 void write_frame(FrameSeries& series, const State& state, double time_s);
 
 }  // namespace ydry

@@ -9,12 +9,14 @@ namespace ydry {
 
 // Sets up the moisture model on a built state whose moisture nodes are grouped (ycrack):
 // initial w, dry masses, triangle conductances, boundary terms from the deck's
-// [[moisture.boundary]] entries, fixed values, and the water balance's starting point.
+// [[moisture.boundary]] entries and from the faces of broken joints ([moisture.cracks],
+// Eqs. 10-17), fixed values, and the water balance's starting point.
 void init_moisture(State& state, const Deck& deck);
 
 // After the moisture nodes were regrouped (ycrack, when joints broke): each new node takes
-// the w of the node it was part of, its share of dry mass and of the boundary terms, so the
-// water in the soil is unchanged. old_mnode and old_w are nodes.mnode and moisture.w before.
+// the w of the node it was part of, its share of dry mass and of the boundary terms, and the
+// faces of the joints that broke get their exchange terms; the water in the soil is unchanged.
+// old_mnode and old_w are nodes.mnode and moisture.w before.
 void remap_moisture_nodes(State& state, const Deck& deck, const std::vector<index_t>& old_mnode,
                           const std::vector<double>& old_w);
 

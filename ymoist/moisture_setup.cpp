@@ -26,12 +26,35 @@ void triangle_conductance(const double* x, const double* y, double k_times_t, do
     for (int b = a; b < 3; ++b) K[i++] = scale * (gx[a] * gx[b] + gy[a] * gy[b]);
 }
 
+// Half the initial length of edge a-b times the thickness: the area a boundary edge or a crack
+// face lumps at each of its two end nodes.
+double half_edge_area(const State& s, const Deck& deck, index_t a, index_t b) {
+  return 0.5 * deck.thickness_m * std::hypot(s.nodes.x0[b] - s.nodes.x0[a], s.nodes.y0[b] - s.nodes.y0[a]);
+}
+
 struct Term {
   index_t mnode;
   MoistureTermKind kind;
   double area, rate, level;
 };
 
+// Eqs. 10-12 and 15-16: both faces of every broken joint exchange h_c (w_e - w) with the air
+// in the crack, each over half its initial length at each of its two end corners' moisture
+// nodes. A crack-tip node so gets a half of both faces, each term at the node's own w.
+void append_crack_face_terms(const State& s, const Deck& deck, std::vector<Term>& terms) {
+  const double h_c = deck.crack_exchange_coefficient;
+  if (h_c <= 0.0) return;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    const index_t* n = &s.joints.node[4 * j];
+    if (!s.joints.broken[j] || s.nodes.mnode[n[0]] == kNoIndex) continue;
+    const double half_area = half_edge_area(s, deck, n[0], n[1]);  // both faces: the joint's length
+    for (int k = 0; k < 4; ++k)  // face 1: nodes 0, 1; face 2: nodes 2, 3
+      terms.push_back({s.nodes.mnode[n[k]], MoistureTermKind::exchange, half_area, h_c, deck.crack_air_moisture});
+  }
+}
+
+// The fixed values and the flux and exchange terms of the deck's [[moisture.boundary]]
+// entries and of the crack faces, on the current moisture nodes.
 void add_boundary_terms(State& s, const Deck& deck) {
   MoistureNodes& m = s.moisture;
   const index_t nm = static_cast<index_t>(m.size());
@@ -42,8 +65,7 @@ void add_boundary_terms(State& s, const Deck& deck) {
     bool touches_moisture = false;
     for (std::size_t k = 0; k < pairs.size(); k += 2) {
       const index_t a = pairs[k], b = pairs[k + 1];
-      const double half_area = 0.5 * deck.thickness_m *
-                               std::hypot(s.nodes.x0[b] - s.nodes.x0[a], s.nodes.y0[b] - s.nodes.y0[a]);
+      const double half_area = half_edge_area(s, deck, a, b);
       for (const index_t node : {a, b}) {
         const index_t mn = s.nodes.mnode[node];
         if (mn == kNoIndex) continue;
@@ -63,8 +85,9 @@ void add_boundary_terms(State& s, const Deck& deck) {
     if (!touches_moisture)
       throw InputError(bc.where + ": boundary \"" + bc.on + "\" touches no material with moisture_conductivity");
   }
+  append_crack_face_terms(s, deck, terms);
 
-  // CSR by moisture node; stable, so each node's terms keep deck order.
+  // CSR by moisture node; stable, so each node's terms keep deck order, crack faces last.
   std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.mnode < b.mnode; });
   m.term_offset.assign(std::size_t(nm) + 1, 0);
   for (const Term& t : terms) ++m.term_offset[t.mnode + 1];
