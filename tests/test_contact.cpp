@@ -15,37 +15,13 @@ using namespace ydry;
 
 namespace {
 
-constexpr double kPenalty = 1.0e7, kThickness = 0.5;
+constexpr double kPenalty = 1.0e7, kThickness = 0.5;  // as two_triangles sets them
 
 // One 1 mm cell cut by its diagonal: two triangles tied by one joint, no gravity.
 State two_triangles(ydry_test::TempDir& dir) {
-  ydry_test::write_text(dir.file("pair.toml"), R"(
-[run]
-name = "pair"
-thickness = 0.5
-end_time = 1.0
-output_interval = 1.0
-gravity = [0.0, 0.0]
-[mesh]
-generator = "rectangle"
-size = [0.001, 0.001]
-element_size = 0.001
-pattern = "right"
-material = "soil"
-[materials.soil]
-density = 1000.0
-young = 1.0e6
-poisson = 0.25
-tensile_strength = 1.0e4
-cohesion = 2.0e4
-friction_angle = 30.0
-gf_I = 1.0
-gf_II = 3.0
-[contact]
-penalty = 1.0e7
-friction = { soil_soil = 30.0 }
-)");
-  State s = setup_state(load_deck(dir.file("pair.toml"), {}));
+  State s = setup_state(ydry_test::block_deck(
+      dir, "right", {"mesh.size=[0.001, 0.001]", "run.thickness=0.5", "contact.penalty=1.0e7",
+                     "contact.friction.soil_soil=30.0"}));
   REQUIRE(s.joints.size() == 1);
   return s;
 }
@@ -84,6 +60,15 @@ std::pair<double, double> pressed_corner_force(const State& s, index_t corner, c
   return {fx * face.ty - fy * face.tx, fx * face.tx + fy * face.ty};
 }
 
+// The joint broken, the second triangle slid 10 % along the face and pressed `depth` into the
+// first: its corner at the face's start (joint node 3) lies inside the first triangle's face.
+Face press_through_broken_joint(State& s, double depth) {
+  break_joint(s);
+  const Face face = first_face(s);
+  move_second_triangle(s, 0.1 * face.length * face.tx - depth * face.ty, 0.1 * face.length * face.ty + depth * face.tx);
+  return face;
+}
+
 // Contact force on every node (the gather of the relaxation, contact only).
 std::vector<double> contact_force_on_nodes(const State& s) {
   const Contact& c = s.contact;
@@ -100,12 +85,8 @@ TEST_CASE("two triangles pressed through a broken joint's faces: p_n t g per cor
           "[contact]") {
   ydry_test::TempDir dir;
   State s = two_triangles(dir);
-  break_joint(s);
-  const Face face = first_face(s);
-  // Slide the second triangle 10 % along the face and press it 1 um into the first: its
-  // corner at the face's start (joint node 3) now lies inside the first triangle's face.
   const double depth = 1.0e-6;
-  move_second_triangle(s, 0.1 * face.length * face.tx - depth * face.ty, 0.1 * face.length * face.ty + depth * face.tx);
+  const Face face = press_through_broken_joint(s, depth);
   contact_forces(s, 0.0);
   const std::vector<double> f = contact_force_on_nodes(s);
 
@@ -129,10 +110,8 @@ TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(p
           "[contact]") {
   ydry_test::TempDir dir;
   State s = two_triangles(dir);
-  break_joint(s);
-  const Face face = first_face(s);
   const double depth = 1.0e-6;
-  move_second_triangle(s, 0.1 * face.length * face.tx - depth * face.ty, 0.1 * face.length * face.ty + depth * face.tx);
+  const Face face = press_through_broken_joint(s, depth);
   // The second triangle slides along the face at 1 mm/s; each step of 1e-6 s slips 1 nm.
   const index_t t = triangle_of(s.joints.node[2]);
   for (int a = 0; a < 3; ++a) {

@@ -22,32 +22,6 @@ namespace {
 
 constexpr double kYoung = 1.0e6, kDensity = 1000.0;
 
-// A free-standing block of breakable soil, no gravity, no boundaries, 1 mm cells.
-Deck block_deck(ydry_test::TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {}) {
-  ydry_test::write_text(dir.file("block.toml"), R"(
-[run]
-name = "block"
-end_time = 1.0
-output_interval = 1.0
-gravity = [0.0, 0.0]
-[mesh]
-generator = "rectangle"
-size = [0.004, 0.003]
-element_size = 0.001
-pattern = ")" + pattern + R"("
-material = "soil"
-[materials.soil]
-density = 1000.0
-young = 1.0e6
-poisson = 0.25
-tensile_strength = 1.0e4
-cohesion = 2.0e4
-friction_angle = 30.0
-gf_I = 1.0
-gf_II = 3.0
-)");
-  return load_deck(dir.file("block.toml"), sets);
-}
 
 // Net nodal forces: elements and gravity, then the joints through each node's slots.
 void net_forces(State& s) {
@@ -66,7 +40,7 @@ void net_forces(State& s) {
 
 TEST_CASE("a rigid rotation of a triangle by 90 degrees gives zero stress and force", "[mechanics]") {
   ydry_test::TempDir dir;
-  State s = setup_state(block_deck(dir, "right"));
+  State s = setup_state(ydry_test::block_deck(dir, "right"));
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {  // (x, y) -> (-y, x) about the origin
     s.nodes.x[i] = -s.nodes.y0[i];
     s.nodes.y[i] = s.nodes.x0[i];
@@ -83,7 +57,7 @@ TEST_CASE("a rigid rotation of a triangle by 90 degrees gives zero stress and fo
 
 TEST_CASE("patch test: a uniform strain gives the Hooke stress in every triangle, balanced at interior vertices", "[mechanics]") {
   ydry_test::TempDir dir;
-  State s = setup_state(block_deck(dir, "cross"));
+  State s = setup_state(ydry_test::block_deck(dir, "cross"));
   const double exx = 1e-4, eyy = -3e-5, exy = 2e-5;  // small, so the co-rotational law is Hooke's
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {
     s.nodes.x[i] = s.nodes.x0[i] + exx * s.nodes.x0[i] + exy * s.nodes.y0[i];
@@ -141,7 +115,7 @@ TEST_CASE("a joint's traction-opening curve integrates to gf_I, and traction-sli
 
 TEST_CASE("element and joint forces conserve linear and angular momentum, broken or not", "[mechanics]") {
   ydry_test::TempDir dir;
-  State s = setup_state(block_deck(dir, "left"));
+  State s = setup_state(ydry_test::block_deck(dir, "left"));
   std::mt19937 rng(3);
   std::normal_distribution<double> jitter(0.0, 2e-5);  // openings into the softening range
   const double angle = 0.3;
@@ -167,7 +141,7 @@ TEST_CASE("element and joint forces conserve linear and angular momentum, broken
 
 TEST_CASE("the stable step is below 2 / omega_max of the linearised solid and within a factor 3 of it", "[mechanics]") {
   ydry_test::TempDir dir;
-  State s = setup_state(block_deck(dir, "right"));
+  State s = setup_state(ydry_test::block_deck(dir, "right"));
   const std::size_t nn = s.nodes.size();
   const double step = stable_mechanics_step(s, 1.0);
   // Stiffness by central differences of the net forces, mass-normalised: M^-1/2 K M^-1/2.
@@ -195,7 +169,7 @@ TEST_CASE("the stable step is below 2 / omega_max of the linearised solid and wi
 TEST_CASE("a column hanging under its own weight stretches by rho g H^2 / 2E within 1 %", "[mechanics]") {
   ydry_test::TempDir dir;
   const double height = 0.1, g = 10.0;
-  State s = setup_state(block_deck(dir, "cross",
+  State s = setup_state(ydry_test::block_deck(dir, "cross",
                                    {"mesh.size=[0.01,0.1]", "mesh.element_size=0.0025", "materials.soil.poisson=0.0",
                                     "materials.soil.breakable=false", "run.gravity=[0.0,-10.0]",
                                     "mechanics.boundary=[{on=\"top\",fix=[\"x\",\"y\"]}]"}));
@@ -258,7 +232,7 @@ TEST_CASE("shrinkage results do not depend on the relaxation controls", "[mechan
 TEST_CASE("pre-existing cracks of the deck break the joints along a segment and split the moisture field there", "[mechanics]") {
   ydry_test::TempDir dir;
   const auto with_crack = [&](const std::string& segment) {
-    return setup_state(block_deck(dir, "right",
+    return setup_state(ydry_test::block_deck(dir, "right",
                                   {"cracks=[{" + segment + "}]", "materials.soil.moisture_conductivity=1e-6",
                                    "materials.soil.initial_moisture=0.3", "materials.soil.shrinkage_coefficient=0.1"}));
   };

@@ -35,6 +35,32 @@ ydry::Deck strip_deck(const std::vector<std::string>& overrides) {
   return ydry::load_deck(YDRY_SOURCE_DIR "/verification/strip1d/strip1d.toml", overrides);
 }
 
+ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets) {
+  write_text(dir.file("block.toml"), R"(
+[run]
+name = "block"
+end_time = 1.0
+output_interval = 1.0
+gravity = [0.0, 0.0]
+[mesh]
+generator = "rectangle"
+size = [0.004, 0.003]
+element_size = 0.001
+pattern = ")" + pattern + R"("
+material = "soil"
+[materials.soil]
+density = 1000.0
+young = 1.0e6
+poisson = 0.25
+tensile_strength = 1.0e4
+cohesion = 2.0e4
+friction_angle = 30.0
+gf_I = 1.0
+gf_II = 3.0
+)");
+  return ydry::load_deck(dir.file("block.toml"), sets);
+}
+
 CommandResult run_ydry(const std::string& arguments) {
   const std::string command = std::string(YDRY_EXECUTABLE) + " " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");

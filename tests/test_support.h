@@ -25,6 +25,10 @@ std::string read_text(const std::string& path);
 // The strip of paper section 4.1 (verification/strip1d/strip1d.toml) with overrides.
 ydry::Deck strip_deck(const std::vector<std::string>& overrides = {});
 
+// A free-standing block of breakable soil (E = 1 MPa, 1000 kg/m^3), 4 x 3 mm in 1 mm cells of
+// `pattern`, no gravity, no boundaries; written into `dir` and read with the overrides.
+ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {});
+
 struct CommandResult {
   int exit_code;
   std::string output;  // stdout and stderr together
