@@ -137,6 +137,20 @@ void start_motion(State& s) {
   }
 }
 
+// Moves the free nodes on along the last coupling step's motion (the velocities relax leaves
+// behind): drying changes the eigenstrain smoothly, so the extrapolated equilibrium leaves
+// the relaxation only the curvature of the path to remove. The joint damage is committed
+// from the relaxed state only, so a prediction that overshoots leaves no trace.
+void predict_equilibrium(State& s, double coupling_dt) {
+  Nodes& n = s.nodes;
+  const std::int64_t nn = std::int64_t(n.size());
+#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
+  for (std::int64_t i = 0; i < nn; ++i) {
+    if (!(n.constraint[i] & kFixX)) n.x[i] += n.vx[i] * coupling_dt;
+    if (!(n.constraint[i] & kFixY)) n.y[i] += n.vy[i] * coupling_dt;
+  }
+}
+
 // Books the reactions, the work of the supports and of gravity since start_motion, and the
 // step count.
 void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
@@ -161,6 +175,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   const double dt = mech.step_s;
   const std::int64_t nn = std::int64_t(n.size());
   start_motion(s);
+  predict_equilibrium(s, coupling_dt);
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
   move_driven_nodes(s, coupling_dt, dt);
