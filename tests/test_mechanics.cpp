@@ -276,3 +276,16 @@ TEST_CASE("a rigid material stays put and never sets the time step", "[mechanics
   CHECK(soil_motion > 1e-6);  // the soil did shrink and sag: the base held still under it
   CHECK(state("7e10").mechanics.step_s == s.mechanics.step_s);  // a stiff base changes nothing
 }
+
+TEST_CASE("a bar pulled apart over many relaxations dissipates gf_I per unit crack area, and the supports' work balances it", "[mechanics]") {
+  // verification/fracture_modeI: a 4 mm line of joints (1 m thick) opened 1e-6 m per coupling
+  // step past complete separation; each relaxation starts from the extrapolated equilibrium,
+  // whose jump the joints must book like any other motion.
+  const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/fracture_modeI/fracture_modeI.toml", {});
+  State s = setup_state(deck);
+  advance_to(s, deck, deck.end_time_s, coupling_step_limit(s, deck));
+  const Energies e = energies(s);
+  const double dissipated = 1.0 * 0.004;  // gf_I x crack area
+  CHECK(e.fracture_J == Approx(dissipated).epsilon(0.01));
+  CHECK(e.external_work_J == Approx(dissipated).epsilon(0.01));
+}

@@ -140,14 +140,20 @@ void start_motion(State& s) {
 // Moves the free nodes on along the last coupling step's motion (the velocities relax leaves
 // behind): drying changes the eigenstrain smoothly, so the extrapolated equilibrium leaves
 // the relaxation only the curvature of the path to remove. The joint damage is committed
-// from the relaxed state only, so a prediction that overshoots leaves no trace.
-void predict_equilibrium(State& s, double coupling_dt) {
+// from the relaxed state only, so a prediction that overshoots leaves no trace. Like the
+// driven nodes' jump, the prediction is seen as a velocity by one force evaluation, so the
+// joints and contacts book its work; prescribed components start at rest.
+void predict_equilibrium(State& s, double coupling_dt, double dt) {
   Nodes& n = s.nodes;
   const std::int64_t nn = std::int64_t(n.size());
 #pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
   for (std::int64_t i = 0; i < nn; ++i) {
-    if (!(n.constraint[i] & kFixX)) n.x[i] += n.vx[i] * coupling_dt;
-    if (!(n.constraint[i] & kFixY)) n.y[i] += n.vy[i] * coupling_dt;
+    const double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
+    const double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
+    n.x[i] += jump_x;
+    n.y[i] += jump_y;
+    n.vx[i] = jump_x / dt;
+    n.vy[i] = jump_y / dt;
   }
 }
 
@@ -175,12 +181,11 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   const double dt = mech.step_s;
   const std::int64_t nn = std::int64_t(n.size());
   start_motion(s);
-  predict_equilibrium(s, coupling_dt);
-  std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
-  std::fill(n.vy.begin(), n.vy.end(), 0.0);
+  predict_equilibrium(s, coupling_dt, dt);
   move_driven_nodes(s, coupling_dt, dt);
   ForceMeasures measures = compute_forces(s, dt);
-  for (const index_t i : mech.driven_node) n.vx[i] = n.vy[i] = 0.0;
+  std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
+  std::fill(n.vy.begin(), n.vy.end(), 0.0);
   mech.fx_previous = n.fx;
   mech.fy_previous = n.fy;
 
