@@ -98,7 +98,7 @@ TEST_CASE("a joint's traction-opening curve integrates to gf_I, and traction-sli
     double damage = 0, work = 0, peak = 0, previous = 0;
     for (int k = 1; k <= n; ++k) {  // monotonic loading, trapezoid rule
       const double d = end * k / n;
-      const PointTraction t = cohesive_traction(m, h0, shear ? 0.0 : d, shear ? d : 0.0, damage);
+      const PointTraction t = cohesive_traction(m, 1.0, h0, shear ? 0.0 : d, shear ? d : 0.0, damage);
       damage = std::max(damage, t.damage);
       const double traction = shear ? t.shear : t.normal;
       work += 0.5 * (traction + previous) * end / n;
