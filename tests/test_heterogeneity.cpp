@@ -2,7 +2,6 @@
 // joint's mesh edge: reproducible, independent of storage order and thread count, with the
 // mean and coefficient of variation asked for, and really used by the joint law.
 #include <catch2/catch.hpp>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +9,6 @@
 #include <random>
 
 #include "tests/test_support.h"
-#include "ycore/blocked_sum.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
 #include "ycore/run.h"
@@ -166,19 +164,14 @@ TEST_CASE("heterogeneous joint forces and damage are bitwise the same on 1 and 2
   }
   std::vector<double> force[2], damage[2];
   std::vector<std::uint8_t> broken[2];
-  const std::size_t default_minimum = parallel_minimum;
-  parallel_minimum = 0;  // every loop in parallel, however short
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
+  ydry_test::on_1_and_2_threads([&](int threads) {
     State t = s;
     joint_forces(t, 0.0);
     commit_joint_damage(t);
     force[threads - 1] = t.joints.force;
     damage[threads - 1] = t.joints.damage;
     broken[threads - 1] = t.joints.broken;
-  }
-  parallel_minimum = default_minimum;
-  omp_set_num_threads(2);
+  });
   CHECK(force[0] == force[1]);
   CHECK(damage[0] == damage[1]);
   CHECK(broken[0] == broken[1]);
