@@ -55,7 +55,8 @@ TEST_CASE("strength factors: the same seed draws the same, another seed others, 
   REQUIRE(a.joints.size() > 50);
   CHECK(a.joints.strength_factor == again.joints.strength_factor);
   std::size_t equal = 0;
-  for (std::size_t j = 0; j < a.joints.size(); ++j) equal += a.joints.strength_factor[j] == other.joints.strength_factor[j];
+  for (std::size_t j = 0; j < a.joints.size(); ++j)
+    equal += a.joints.strength_factor[j] == other.joints.strength_factor[j];
   CHECK(equal == 0);
   CHECK(std::all_of(homogeneous.joints.strength_factor.begin(), homogeneous.joints.strength_factor.end(),
                     [](double f) { return f == 1.0; }));

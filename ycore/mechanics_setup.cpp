@@ -107,8 +107,10 @@ void set_joint_data(State& s, const Deck& deck) {
   // The pre-peak work (2/3) f_t o_p with o_p = 2 h f_t / p must leave room for softening, in
   // the joint where h f_t^2 is largest (f_t times the joint's strength factor).
   std::vector<double> largest(s.materials.size(), 0.0);  // h x factor^2, m
-  for (std::size_t k = 0; k < nj; ++k)
-    largest[j.material[k]] = std::max(largest[j.material[k]], j.length0[k] * j.strength_factor[k] * j.strength_factor[k]);
+  for (std::size_t k = 0; k < nj; ++k) {
+    const double f = j.strength_factor[k];
+    largest[j.material[k]] = std::max(largest[j.material[k]], j.length0[k] * f * f);
+  }
   for (std::size_t id = 0; id < s.materials.size(); ++id) {
     const MaterialModel& m = s.materials[id];
     if (!m.mechanical || !m.breakable || largest[id] == 0.0) continue;

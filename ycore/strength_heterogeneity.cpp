@@ -44,7 +44,8 @@ double strength_factor(std::uint64_t seed, index_t vertex_a, index_t vertex_b, c
 void set_strength_factors(Joints& jt, const Nodes& n, const std::vector<MaterialModel>& materials,
                           std::uint64_t seed) {
   std::vector<UnitMeanWeibull> weibull;
-  for (const MaterialModel& m : materials) weibull.push_back(unit_mean_weibull(m.breakable ? m.strength_heterogeneity : 0.0));
+  for (const MaterialModel& m : materials)
+    weibull.push_back(unit_mean_weibull(m.breakable ? m.strength_heterogeneity : 0.0));
   jt.strength_factor.assign(jt.size(), 1.0);
   for (std::size_t j = 0; j < jt.size(); ++j) {
     const UnitMeanWeibull& w = weibull[jt.material[j]];
