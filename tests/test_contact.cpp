@@ -1,12 +1,10 @@
 // Contact: two triangles whose common joint broke press on each other through their faces;
 // with the joint intact they never touch.
 #include <catch2/catch.hpp>
-#include <omp.h>
 
 #include <cmath>
 
 #include "tests/test_support.h"
-#include "ycore/blocked_sum.h"
 #include "ycore/contact.h"
 #include "ycore/run.h"
 #include "ycrack/node_sharing.h"
@@ -149,16 +147,11 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
           "[contact][threads]") {
   const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {});
   std::vector<double> x[2], work(2);
-  const std::size_t default_minimum = parallel_minimum;
-  parallel_minimum = 0;  // every loop in parallel, however short
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
+  ydry_test::on_1_and_2_threads([&](int threads) {
     const State s = setup_state(deck);
     x[threads - 1] = s.nodes.y;
     work[threads - 1] = s.contact.work_J;
-  }
-  parallel_minimum = default_minimum;
-  omp_set_num_threads(2);
+  });
   CHECK(x[0] == x[1]);
   CHECK(work[0] == work[1]);
   CHECK(work[0] > 0.0);  // the contacts did carry the block

@@ -167,6 +167,7 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   cracked.triangles.sxx.assign(nt, 1.0e3);
   cracked.triangles.syy.assign(nt, -2.0e3);
   cracked.triangles.sxy.assign(nt, 0.5e3);
+  for (std::size_t j = 0; j < cracked.joints.size(); ++j) cracked.joints.strength_factor.push_back(1.0 + 1e-3 * j);
   write_frame(series, cracked, 3600.0);
   // The same cracks with moisture: 0.3 left of the x = 30 mm crack, 0.1 right of it.
   State wet = two_crack_state();
@@ -180,6 +181,7 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   CHECK(empty->GetErrorCode() == 0);
   CHECK(empty->GetOutput()->GetNumberOfCells() == 0);
   CHECK(read_vtu(dir.file("frames/t_000000.vtu"))->GetOutput()->GetCellData()->GetArray("stress") == nullptr);
+  CHECK(empty->GetOutput()->GetCellData()->GetArray("strength_factor") == nullptr);  // no mechanics
 
   auto lines = read_vtu(dir.file("frames/t_cracks_000001.vtu"));
   vtkUnstructuredGrid* grid = lines->GetOutput();
@@ -196,6 +198,8 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   CHECK(grid->GetCellData()->GetArray("slip")->GetTuple1(0) == Approx(0.0).margin(1e-15));
   REQUIRE(grid->GetCellData()->GetArray("moisture_face1") != nullptr);
   CHECK(std::isnan(grid->GetCellData()->GetArray("moisture_face1")->GetTuple1(0)));  // no moisture model
+  REQUIRE(grid->GetCellData()->GetArray("strength_factor") != nullptr);
+  CHECK(grid->GetCellData()->GetArray("strength_factor")->GetTuple1(0) == 1.0 + 1e-3 * first_broken(cracked));
 
   // Each face carries the moisture of its own side: face 1 is the first triangle's edge.
   auto wet_lines = read_vtu(dir.file("frames/t_cracks_000002.vtu"));

@@ -99,6 +99,20 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"velocity with fix", "", "", "--set 'mechanics.boundary=[{on=\"left\",fix=[\"x\"],velocity=[1.0,0.0]}]'",
        "mechanics.boundary[0].velocity: prescribes both components"},
       {"material missing", "material = \"soil\"", "material = \"clay\"", "", "mesh: the mesh has material \"clay\""},
+      {"negative heterogeneity", "initial_moisture = 0.2", "initial_moisture = 0.2\nstrength_heterogeneity = -0.1", "",
+       "deck.toml:17: materials.soil.strength_heterogeneity: value -0.1 out of range: must be in [0, 1]"},
+      {"heterogeneity above 1", "", "", "--set materials.soil.strength_heterogeneity=1.5",
+       "materials.soil.strength_heterogeneity: value 1.5 out of range: must be in [0, 1]"},
+      {"non-finite heterogeneity", "initial_moisture = 0.2", "initial_moisture = 0.2\nstrength_heterogeneity = nan", "",
+       "deck.toml:17: materials.soil.strength_heterogeneity: must be finite"},
+      {"infinite heterogeneity", "", "", "--set materials.soil.strength_heterogeneity=inf",
+       "materials.soil.strength_heterogeneity: must be finite"},
+      {"heterogeneity on joints that never fail", "initial_moisture = 0.2",
+       "initial_moisture = 0.2\nbreakable = false\nstrength_heterogeneity = 0.2", "",
+       "deck.toml:18: materials.soil.strength_heterogeneity: the joints of a material with breakable = false never fail"},
+      {"heterogeneity on a rigid material", "initial_moisture = 0.2",
+       "initial_moisture = 0.2\nrigid = true\nstrength_heterogeneity = 0.2", "",
+       "deck.toml:18: materials.soil.strength_heterogeneity: a rigid material has no joints to weaken"},
   };
   for (const Case& c : cases) {
     ydry_test::TempDir dir;

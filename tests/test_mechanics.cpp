@@ -1,7 +1,6 @@
 // The solid: co-rotational triangles, cohesive joints, the stable step, momentum, and a bar
 // under its own weight against its linear-elastic answer.
 #include <catch2/catch.hpp>
-#include <omp.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -98,7 +97,7 @@ TEST_CASE("a joint's traction-opening curve integrates to gf_I, and traction-sli
     double damage = 0, work = 0, peak = 0, previous = 0;
     for (int k = 1; k <= n; ++k) {  // monotonic loading, trapezoid rule
       const double d = end * k / n;
-      const PointTraction t = cohesive_traction(m, h0, shear ? 0.0 : d, shear ? d : 0.0, damage);
+      const PointTraction t = cohesive_traction(m, 1.0, h0, shear ? 0.0 : d, shear ? d : 0.0, damage);
       damage = std::max(damage, t.damage);
       const double traction = shear ? t.shear : t.normal;
       work += 0.5 * (traction + previous) * end / n;
@@ -185,16 +184,11 @@ TEST_CASE("the solid's equilibrium is bitwise the same on 1 and 2 threads", "[me
   ydry_test::TempDir dir;
   const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/shrinkage/shrinkage.toml", {"mesh.element_size=0.0025"});
   std::vector<double> x[2];
-  const std::size_t default_minimum = parallel_minimum;
-  parallel_minimum = 0;  // every loop in parallel, however short
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
+  ydry_test::on_1_and_2_threads([&](int threads) {
     const State s = setup_state(deck);
     REQUIRE(s.nodes.size() > kReductionBlock);  // the reductions span several blocks
     x[threads - 1] = s.nodes.x;
-  }
-  parallel_minimum = default_minimum;
-  omp_set_num_threads(2);
+  });
   CHECK(x[0] == x[1]);
 }
 

@@ -2,7 +2,6 @@
 // water balance, thread invariance, the 5 mm strip against the closed form, and the exchange
 // through crack faces (Eqs. 10-17).
 #include <catch2/catch.hpp>
-#include <omp.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -12,7 +11,6 @@
 
 #include "tests/test_support.h"
 #include "ycore/run.h"
-#include "ycore/blocked_sum.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
 #include "ymoist/moisture.h"
@@ -109,16 +107,11 @@ TEST_CASE("water in through a flux boundary equals rate x length x thickness x t
 TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture][determinism]") {
   const Deck deck = strip_deck({"mesh.element_size=0.002", "mesh.pattern=\"cross\""});
   std::vector<double> w[2];
-  const std::size_t default_minimum = parallel_minimum;
-  parallel_minimum = 0;  // every loop in parallel, however short
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
+  ydry_test::on_1_and_2_threads([&](int threads) {
     State s = setup_state(deck);
     advance_to(s, deck, 2.0e5, stable_moisture_step(s, 0.9));
     w[threads - 1] = s.moisture.w;
-  }
-  parallel_minimum = default_minimum;
-  omp_set_num_threads(omp_get_num_procs());
+  });
   CHECK(w[0] == w[1]);
 }
 

@@ -2,10 +2,13 @@
 // ydry executable.
 #pragma once
 
+#include <omp.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "ycore/blocked_sum.h"
 #include "ycore/deck.h"
 
 namespace ydry_test {
@@ -28,6 +31,26 @@ ydry::Deck strip_deck(const std::vector<std::string>& overrides = {});
 // A free-standing block of breakable soil (E = 1 MPa, 1000 kg/m^3), 4 x 3 mm in 1 mm cells of
 // `pattern`, no gravity, no boundaries; written into `dir` and read with the overrides.
 ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {});
+
+// Runs body(threads) on 1, then 2 OpenMP threads with every loop in parallel however short
+// (parallel_minimum = 0), for the tests that results are bitwise the same on any thread
+// count; the thread count and parallel_minimum are restored afterwards, even on a failure.
+template <class Body>
+void on_1_and_2_threads(Body body) {
+  struct Restore {
+    std::size_t minimum = ydry::parallel_minimum;
+    int threads = omp_get_max_threads();
+    ~Restore() {
+      ydry::parallel_minimum = minimum;
+      omp_set_num_threads(threads);
+    }
+  } restore;
+  ydry::parallel_minimum = 0;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    body(threads);
+  }
+}
 
 struct CommandResult {
   int exit_code;

@@ -8,10 +8,6 @@
 namespace ydry {
 namespace {
 
-std::uint64_t edge_key(index_t a, index_t b) {
-  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
-}
-
 struct EdgeSide {
   index_t triangle;
   int edge;  // local edge e runs from corner e to corner (e + 1) % 3

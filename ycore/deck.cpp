@@ -72,6 +72,13 @@ MaterialDeck read_material(TableReader r, const std::string& name) {
   m.mass_scaling = r.number("mass_scaling", kPositive, 1.0);
   m.breakable = r.boolean("breakable", true);
   m.rigid = r.boolean("rigid", false);
+  // Up to 1, a Weibull modulus of 1 (strength_heterogeneity.h); a material whose joints never
+  // fail refuses the key rather than ignore it.
+  if (m.breakable && !m.rigid)
+    m.strength_heterogeneity = r.number("strength_heterogeneity", Range{0, 1, false, false}, 0.0);
+  else if (r.has("strength_heterogeneity"))
+    r.error("strength_heterogeneity", m.rigid ? "a rigid material has no joints to weaken"
+                                              : "the joints of a material with breakable = false never fail");
   if (m.has_moisture()) {
     if (!m.density) r.missing("density");
     if (!m.initial_moisture) r.missing("initial_moisture");

@@ -27,6 +27,7 @@ struct MaterialDeck {
   std::optional<double> initial_moisture;        // w_0, mass fraction
   std::optional<double> stress_free_moisture;    // w_i of Eq. 18; default: initial_moisture
   double mass_scaling = 1.0;                     // inertial mass factor of the relaxation
+  double strength_heterogeneity = 0.0;           // CV of the joints' strength factor; 0: uniform
   bool breakable = true;
   bool rigid = false;
   // A material takes part in moisture diffusion when it has a conductivity.

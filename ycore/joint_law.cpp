@@ -38,17 +38,17 @@ double softening_length(double fracture_energy, double strength, double peak) {
 
 }  // namespace
 
-PointTraction cohesive_traction(const MaterialModel& m, double h0, double o, double s,
-                                double committed_damage) {
+PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
+                                double s, double committed_damage) {
   const double k = m.penalty / h0;  // Pa per m: the initial slope of both branches
   if (!m.breakable) return {k * o, k * s, 0.0};
 
   PointTraction t;
-  const double ft = m.tensile_strength;
+  const double ft = strength_factor * m.tensile_strength;
   const double op = 2.0 * ft / k;
   const double ot = softening_length(m.gf_I, ft, op);
   const double compression = o < 0.0 ? -k * o : 0.0;
-  const double fs = m.cohesion + compression * m.tan_friction;  // Fig. 2b
+  const double fs = strength_factor * m.cohesion + compression * m.tan_friction;  // Fig. 2b
   const double abs_s = std::fabs(s);
   double dn = o > op ? (o - op) / ot : 0.0;
   double ds = 0.0, sp = 0.0;

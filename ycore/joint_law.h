@@ -20,13 +20,15 @@ struct PointTraction {
 };
 
 // Traction at a joint point of initial length h0 with normal opening o and slip s (m), given
-// the point's committed damage. Pre-peak o_p = 2 h0 f_t / p (Fig. 2a), then z(D) f_t with
+// the point's committed damage. The joint's strength_factor multiplies the material's f_t and
+// c (strength heterogeneity; the fracture energies stay the material's). Pre-peak
+// o_p = 2 h0 f_t / p (Fig. 2a), then z(D) f_t with
 // D = sqrt(((o - o_p)/o_t)^2 + ((|s| - s_p)/s_t)^2) (Fig. 2c), the softening lengths chosen so
 // that pre-peak plus softening work is exactly gf_I (gf_II) per unit area. Mode II strength
 // c + sigma_n tan(phi) under compression (Fig. 2b). Compression is a linear penalty p o / h0.
 // In a material that is not breakable the joint is the linear penalty in both directions.
-PointTraction cohesive_traction(const MaterialModel& m, double h0, double o, double s,
-                                double committed_damage);
+PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
+                                double s, double committed_damage);
 
 // A joint's three integration points: the two ends and the middle, with Simpson weights of
 // the initial length, and the share of end 0 (nodes 0, 3) in each point's opening and slip.

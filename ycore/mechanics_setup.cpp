@@ -9,6 +9,7 @@
 #include "ycore/contact.h"
 #include "ycore/input_error.h"
 #include "ycore/mechanics.h"
+#include "ycore/strength_heterogeneity.h"
 
 namespace ydry {
 namespace {
@@ -47,6 +48,7 @@ MaterialModel material_model(const MaterialDeck& md, const Deck& deck) {
     m.tan_friction = std::tan(required(md.friction_angle_deg, md, "friction_angle", joints) * M_PI / 180.0);
     m.gf_I = required(md.gf_I, md, "gf_I", joints);
     m.gf_II = required(md.gf_II, md, "gf_II", joints);
+    m.strength_heterogeneity = md.strength_heterogeneity;
   }
   if (md.has_moisture()) {
     m.shrinkage_coefficient =
@@ -91,27 +93,33 @@ void set_joint_data(State& s, const Deck& deck) {
   j.force.assign(8 * nj, 0.0);
   j.work.assign(nj, 0.0);
   s.nodes.joint_slot.assign(2 * n.size(), kNoIndex);
-  std::vector<double> longest(s.materials.size(), 0.0);
   for (std::size_t k = 0; k < nj; ++k) {
     const index_t a = j.node[4 * k], b = j.node[4 * k + 1];
     j.material[k] = s.triangles.material[triangle_of(a)];
     j.length0[k] = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
-    longest[j.material[k]] = std::max(longest[j.material[k]], j.length0[k]);
     for (int c = 0; c < 4; ++c) {
       const index_t node = j.node[4 * k + c];
       index_t* slot = &s.nodes.joint_slot[2 * node];
       slot[slot[0] == kNoIndex ? 0 : 1] = index_t(4 * k + c);
     }
   }
-  // The pre-peak work (2/3) f_t o_p with o_p = 2 h f_t / p must leave room for softening.
+  set_strength_factors(j, n, s.materials, std::uint64_t(deck.seed));
+  // The pre-peak work (2/3) f_t o_p with o_p = 2 h f_t / p must leave room for softening, in
+  // the joint where h f_t^2 is largest (f_t times the joint's strength factor).
+  std::vector<double> largest(s.materials.size(), 0.0);  // h x factor^2, m
+  for (std::size_t k = 0; k < nj; ++k) {
+    const double f = j.strength_factor[k];
+    largest[j.material[k]] = std::max(largest[j.material[k]], j.length0[k] * f * f);
+  }
   for (std::size_t id = 0; id < s.materials.size(); ++id) {
     const MaterialModel& m = s.materials[id];
-    if (!m.mechanical || !m.breakable || longest[id] == 0.0) continue;
-    const double prepeak = 2.0 / 3.0 * m.tensile_strength * 2.0 * longest[id] * m.tensile_strength / m.penalty;
+    if (!m.mechanical || !m.breakable || largest[id] == 0.0) continue;
+    const double prepeak = 2.0 / 3.0 * m.tensile_strength * 2.0 * largest[id] * m.tensile_strength / m.penalty;
     if (m.gf_I <= prepeak)
       throw InputError(deck.materials.at(s.material_names[id]).where +
                        ".gf_I: smaller than the joint's pre-peak work " + std::to_string(prepeak) +
-                       " J/m^2 at this element size; raise solver.joint_penalty or refine the mesh");
+                       " J/m^2 at this element size" + (m.strength_heterogeneity > 0.0 ? " and strongest joint" : "") +
+                       "; raise solver.joint_penalty or refine the mesh");
   }
 }
 

@@ -11,6 +11,12 @@ namespace ydry {
 
 using index_t = std::uint32_t;  // all mesh indices are 32-bit
 
+// A mesh edge's name: its two vertex ids, the smaller in the high word, so both directions
+// of the edge give the same key.
+inline std::uint64_t edge_key(index_t a, index_t b) {
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
 struct MeshInput {
   std::vector<double> vx, vy;               // vertex coordinates, m            [vertices]
   std::vector<index_t> tri;                 // 3 vertex ids per triangle, CCW   [3 * triangles]

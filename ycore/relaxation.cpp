@@ -244,8 +244,8 @@ std::size_t commit_joint_damage(State& s) {
     for (int p = 0; p < 3; ++p) {
       const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
       double& d = jt.damage[3 * j + p];
-      d = std::max(d, cohesive_traction(m, jt.length0[j], a * k.opening[0] + b * k.opening[1],
-                                        a * k.slip[0] + b * k.slip[1], d).damage);
+      const double o = a * k.opening[0] + b * k.opening[1], sl = a * k.slip[0] + b * k.slip[1];
+      d = std::max(d, cohesive_traction(m, jt.strength_factor[j], jt.length0[j], o, sl, d).damage);
       failed += d >= 1.0;
     }
     if (failed >= 2) {

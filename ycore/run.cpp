@@ -13,6 +13,7 @@
 #include "ycore/input_error.h"
 #include "ycore/output_files.h"
 #include "ycore/progress.h"
+#include "ycore/strength_heterogeneity.h"
 #include "ycore/vtk_output.h"
 #include "ycore/contact.h"
 #include "ycore/mechanics.h"
@@ -56,6 +57,19 @@ std::vector<index_t> right_end_corners(const State& s) {
       corners.push_back(index_t(i));
   }
   return corners;
+}
+
+// The log's account of a material's strength heterogeneity: the distribution asked for and
+// what the joints drew.
+std::string strength_factor_line(const State& s, std::size_t material, std::int64_t seed) {
+  const double cv = s.materials[material].strength_heterogeneity;
+  const StrengthFactorRange r = strength_factor_range(s.joints, std::uint16_t(material));
+  std::ostringstream line;
+  line << "materials." << s.material_names[material] << ": strength factors of " << r.joints
+       << " joints (Weibull, mean 1, coefficient of variation " << cv << ", modulus "
+       << 1.0 / unit_mean_weibull(cv).inverse_shape << ", seed " << seed << "): min " << r.min << ", mean "
+       << r.mean << ", max " << r.max;
+  return line.str();
 }
 
 std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end,
@@ -212,6 +226,9 @@ int run(const RunOptions& opt) {
   for (std::size_t m = 0; m < material_used.size(); ++m)
     if (!material_used[m])
       log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
+  if (deck.mechanics)
+    for (std::size_t m = 0; m < state.materials.size(); ++m)
+      if (state.materials[m].strength_heterogeneity > 0.0) log.info(strength_factor_line(state, m, deck.seed));
   double max_step = coupling_step_limit(state, deck);
   std::ostringstream steps;
   steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";

@@ -64,6 +64,8 @@ struct Joints {                   // one per interior edge inside a material
   std::vector<std::uint8_t> broken;     // [joints] 1 once the joint has failed, for good
   std::vector<std::uint16_t> material;  // [joints] the material of both its triangles
   std::vector<double> length0;          // [joints] initial length, m
+  std::vector<double> strength_factor;  // [joints] multiplies the material's tensile strength
+                                        // and cohesion (strength_heterogeneity; 1 without)
   std::vector<double> damage;           // [3 * joints] committed damage D at the two ends and
                                         // the middle (never decreases: joints do not heal)
   std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
@@ -120,6 +122,7 @@ struct MaterialModel {
   double shrinkage_coefficient = 0, shrinkage_limit = 0, stress_free_moisture = 0;  // Eq. 18
   double penalty = 0;          // joint penalty p, Pa
   double tensile_strength = 0, cohesion = 0, tan_friction = 0, gf_I = 0, gf_II = 0;
+  double strength_heterogeneity = 0;  // coefficient of variation of the joints' strength factor
 };
 
 // A [[mechanics.boundary]]: nodes whose components are fixed or driven at a velocity.

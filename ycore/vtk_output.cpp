@@ -85,7 +85,8 @@ vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
 }
 
 // One line per broken joint between the midpoints of its node pairs at the two ends, with
-// the mean opening and slip of the ends and the mean moisture of each face's two corners.
+// the mean opening and slip of the ends, the mean moisture of each face's two corners and, in
+// a run with mechanics, the joint's strength factor.
 vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   const Nodes& n = s.nodes;
   vtkIdType nb = 0;
@@ -99,6 +100,8 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   auto slip = named_array("slip", 1, nb);
   auto face1 = named_array("moisture_face1", 1, nb);  // nodes 0, 1: the first triangle's edge
   auto face2 = named_array("moisture_face2", 1, nb);  // nodes 2, 3: the second's
+  const bool mechanics = s.joints.strength_factor.size() == s.joints.size();
+  auto factor = named_array("strength_factor", 1, mechanics ? nb : 0);
   vtkIdType line = 0;
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     if (!s.joints.broken[j]) continue;
@@ -114,6 +117,7 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
     slip->SetValue(line, 0.5 * (k.slip[0] + k.slip[1]));
     face1->SetValue(line, 0.5 * (node_moisture(s, jn[0]) + node_moisture(s, jn[1])));
     face2->SetValue(line, 0.5 * (node_moisture(s, jn[2]) + node_moisture(s, jn[3])));
+    if (mechanics) factor->SetValue(line, s.joints.strength_factor[j]);
     ++line;
   }
   vtkNew<vtkUnstructuredGrid> grid;
@@ -123,6 +127,7 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   grid->GetCellData()->AddArray(slip);
   grid->GetCellData()->AddArray(face1);
   grid->GetCellData()->AddArray(face2);
+  if (mechanics) grid->GetCellData()->AddArray(factor);
   return grid;
 }
 
