@@ -29,6 +29,11 @@ ydry::Deck strip_deck(const std::vector<std::string>& overrides = {});
 // `pattern`, no gravity, no boundaries; written into `dir` and read with the overrides.
 ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {});
 
+// A Gmsh 4.1 file of one triangle (sparse node tags 10, 20, 30) in surface 1 of physical
+// surface "soil", and no physical curve. Line numbers: 10 the surface, 16 the second node
+// tag, 19 its coordinates, 24 the element block header, 25 the element.
+extern const std::string kOneTriangleMsh;
+
 struct CommandResult {
   int exit_code;
   std::string output;  // stdout and stderr together
