@@ -154,8 +154,10 @@ def report(run, folder, figures, skipped):
     fmt_time = lambda t: "never" if t is None else f"{t:g} s ({t / MINUTE:.0f} min)"  # noqa: E731
     fmt_mm = lambda v: "n/a" if v is None or not math.isfinite(v) else f"{v * MM:.4g} mm"  # noqa: E731
     first_text = "n/a (no solid)" if run["cracks"] is None else fmt_time(first)
-    stable_text = ("n/a (no crack)" if first is None else "not reached" if stable is None
-                   else fmt_time(stable))
+    end = float(series["time_s"][-1])
+    stable_text = ("n/a (no crack)" if first is None else "not reached" if stable is None else
+                   f"{fmt_time(stable)}; held for the last {(end - stable) / MINUTE:.0f} min of the run "
+                   f"({np.count_nonzero(series['time_s'] >= stable)} rows)")
     status = "completed" if s["completed"] else f"NOT completed (stopped at t = {s['time_s']:g} s)"
     lines = [f"# ydry run {s['name']}: {folder}", "",
              f"{status}; {s['elements']} elements, {s['moisture_steps']} moisture steps, "
@@ -258,7 +260,7 @@ def fig_pattern(run, path, count, warp):
     for ax, t, (solid, lines) in zip(axes[:, 0], times, data):
         image = draw_solid(ax, solid, solid["point_data"]["moisture"], cmap="YlGnBu", vmin=lo, vmax=hi)
         draw_cracks(ax, lines)
-        ax.set_title(f"t = {t / MINUTE:.0f} min: {len(lines['ends'])} broken joints", fontsize=10, loc="left")
+        ax.set_title(f"t = {t / MINUTE:.0f} min, broken joints: {len(lines['ends'])}", fontsize=10, loc="left")
         ax.set_ylabel("y (mm)")
     axes[-1, 0].set_xlabel("x (mm)")
     fig.suptitle(f"Crack initiation and propagation (paper Fig. 19a): moisture, broken joints in magenta, "
@@ -281,7 +283,7 @@ def fig_field(run, path, component, warp):
                  f"(paper Fig. {figure}); displacements x{warp:g}")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    fig.colorbar(image, ax=ax, label=f"u$_{'xy'[component]}$ (mm)", aspect=10)
+    fig.colorbar(image, ax=ax, label=f"u$_{'xy'[component]}$ (mm)", aspect=10, shrink=0.8)
     return save(fig, path)
 
 
@@ -326,6 +328,7 @@ def fig_tracks(run, tracks, path, key, figure):
     else:
         no_data(ax, "no crack wider than run.crack_width_threshold")
     ax.set_title(f"Evolution of the crack {key} (paper Fig. {figure})")
+    ax.set_xlim(0.0, times[-1] / MINUTE)
     ax.set_ylabel(f"crack {'mouth opening' if key == 'width' else 'length'} (mm)")
     if panels == 2:
         mean = axes[1, 0]
