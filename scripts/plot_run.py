@@ -260,7 +260,8 @@ def fig_pattern(run, path, count, warp):
     for ax, t, (solid, lines) in zip(axes[:, 0], times, data):
         image = draw_solid(ax, solid, solid["point_data"]["moisture"], cmap="YlGnBu", vmin=lo, vmax=hi)
         draw_cracks(ax, lines)
-        ax.set_title(f"t = {t / MINUTE:.0f} min, broken joints: {len(lines['ends'])}", fontsize=10, loc="left")
+        ax.set_title(f"t = {t / MINUTE:.0f} min, broken joints: {len(lines['ends'])}", fontsize=10,
+                     loc="left")
         ax.set_ylabel("y (mm)")
     axes[-1, 0].set_xlabel("x (mm)")
     fig.suptitle(f"Crack initiation and propagation (paper Fig. 19a): moisture, broken joints in magenta, "
