@@ -26,6 +26,7 @@ build: configure
 run: build
 	$(BUILD)/ydry $(DECK) -o $(OUTDIR)
 	@echo "Outputs in $(OUTDIR)/ (open $(OUTDIR)/*.pvd in ParaView)"
+	$(PYTHON) scripts/plot_run.py $(OUTDIR)
 
 test: build
 	cd $(BUILD) && ctest $(CTEST_FLAGS)

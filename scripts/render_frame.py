@@ -13,7 +13,6 @@ opening), with the element edges and a scale bar; its box is outlined in the top
 Debian's VTK renders through X: with no DISPLAY the script runs itself again under
 `xvfb-run -a` (package xvfb).
 """
-import argparse
 import os
 import shutil
 import sys
@@ -24,8 +23,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text rendering)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the render window)
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import (vtkCellArray, vtkDataObject, vtkPolyData,
-                                            vtkStaticPointLocator)
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkPolyDataConnectivityFilter
 from vtkmodules.vtkFiltersGeneral import vtkWarpVector
 from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
@@ -36,7 +34,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtk
                                          vtkTextActor, vtkWindowToImageFilter)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
-import ydry_case  # noqa: E402  (frames, read_grid)
+import ydry_case  # noqa: E402  (script_parser, frames, read_grid, corners, crack_displacement)
 
 CRACK_COLOR = (1.0, 0.0, 1.0)
 # Moisture: dry brown through pale sand to wet dark blue.
@@ -46,9 +44,7 @@ TOP, ZOOM = (0.0, 0.66, 1.0, 0.90), (0.0, 0.0, 0.84, 0.62)  # viewports (x0, y0,
 
 
 def arguments():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
-                                     formatter_class=argparse.RawDescriptionHelpFormatter,
-                                     epilog="\n".join(__doc__.splitlines()[2:]))
+    parser = ydry_case.script_parser(__doc__)
     parser.add_argument("run", type=Path, help="run folder (ydry -o) or its .pvd")
     parser.add_argument("--time", type=float, help="time in s; the nearest frame (default: the last)")
     parser.add_argument("--warp", type=float, default=1.0,
@@ -66,28 +62,6 @@ def ensure_display():
         os.environ["RENDER_FRAME_XVFB"] = "1"
         os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
     sys.exit("render_frame: no DISPLAY and no xvfb-run; install xvfb or run under a display")
-
-
-def corners(bulk, at, warp=1.0):
-    """For each point in `at` (n x 3): the ids of the solid's points at the reference vertex
-    of the nearest point (the corners of every triangle meeting there, on both faces of a
-    crack). The solid's points are its reference ones plus warp times the displacement."""
-    x = vtk_to_numpy(bulk.GetPoints().GetData())
-    u = vtk_to_numpy(bulk.GetPointData().GetArray("displacement"))
-    _, vertex, count = np.unique(np.round((x - warp * u) * 1e9), axis=0, return_inverse=True,
-                                 return_counts=True)
-    groups = np.split(np.argsort(vertex, kind="stable"), np.cumsum(count)[:-1])
-    locator = vtkStaticPointLocator()
-    locator.SetDataSet(bulk)
-    locator.BuildLocator()
-    return [groups[vertex[locator.FindClosestPoint(point)]] for point in at]
-
-
-def crack_displacement(bulk, cracks):
-    """The displacement at the crack line ends: the mean over the corners at their vertices."""
-    u = vtk_to_numpy(bulk.GetPointData().GetArray("displacement"))
-    ends = vtk_to_numpy(cracks.GetPoints().GetData())
-    return np.array([u[ids].mean(axis=0) for ids in corners(bulk, ends)])
 
 
 def warped(grid, warp):
@@ -240,7 +214,7 @@ def add_zoom(window, top, bulk, cracks, colors, warp):
     shortest_edge = np.min(np.linalg.norm(x[1::3] - x[0::3], axis=1))
     (c0, c1, c2, c3), opening, ends = widest_crack(cracks, 0.25 * shortest_edge)
     w = vtk_to_numpy(bulk.GetPointData().GetArray("moisture"))
-    jump = max(np.ptp(w[ids]) for ids in corners(bulk, ends, warp))
+    jump = max(np.ptp(w[ids]) for ids in ydry_case.corners(bulk, ends, warp))
     y0, y1 = bulk.GetBounds()[2:4]
     half_height = 0.6 * max(c3 - c2, 0.2 * (y1 - y0))
     half_width = half_height * aspect(window, ZOOM)
@@ -281,7 +255,7 @@ def main():
     bulk = ydry_case.read_grid(frames[time][0])
     cracks = ydry_case.read_grid(frames[time][1])
     if args.warp != 1.0 and cracks.GetNumberOfPoints():
-        cracks.GetPointData().AddArray(numpy_to_vtk(crack_displacement(bulk, cracks), deep=True))
+        cracks.GetPointData().AddArray(numpy_to_vtk(ydry_case.crack_displacement(bulk, cracks), deep=True))
         cracks.GetPointData().GetArray(0).SetName("displacement")
     bulk, cracks = warped(bulk, args.warp), warped(cracks, args.warp)
     colors = moisture_colors(vtk_to_numpy(bulk.GetPointData().GetArray("moisture")))

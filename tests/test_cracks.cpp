@@ -19,6 +19,7 @@
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
 #include "ycrack/node_sharing.h"
+#include "ycrack/surface_profile.h"
 
 using namespace ydry;
 
@@ -130,6 +131,28 @@ TEST_CASE("an internal crack is measured at its highest vertex", "[crack]") {
   CHECK(cracks[0].length_m == Approx(0.005).epsilon(1e-12));
   CHECK(cracks[0].x_m == Approx(0.02).margin(50e-6));
   CHECK_FALSE(cracks[0].penetrating);
+}
+
+TEST_CASE("a crack reaching the top splits its surface vertex into two points on two segments", "[crack][surface]") {
+  // Top edges of the 40 mm rectangle: vertices every 5 mm. The x = 10 mm crack (upper half,
+  // 200 um) and the x = 30 mm one (full height, 80 um) reach the top; a third through the
+  // lower half at x = 20 mm does not, so that vertex stays one point.
+  State s = two_crack_state();
+  REQUIRE(break_vertical(s, 0.02, 0.0, kHeight / 2) == 2);
+  tie_corners(s.joints, s.nodes);
+  const std::vector<SurfacePoint> points = surface_profile(s, s.boundary_edges.at("top"));
+  REQUIRE(points.size() == 9 + 2);
+  const double x0[11] = {0, 5, 10, 10, 15, 20, 25, 30, 30, 35, 40};  // mm
+  const int segment[11] = {0, 0, 0, 1, 1, 1, 1, 1, 2, 2, 2};
+  const double ux[3] = {0.0, 200e-6, 280e-6};  // each segment's rigid shift
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    INFO("point " << k);
+    CHECK(points[k].x0_m == Approx(1e-3 * x0[k]).margin(1e-12));
+    CHECK(points[k].y0_m == Approx(kHeight).margin(1e-12));
+    CHECK(points[k].segment == segment[k]);
+    CHECK(points[k].ux_m == Approx(ux[segment[k]]).margin(1e-15));
+    CHECK(points[k].uy_m == Approx(0.0).margin(1e-15));
+  }
 }
 
 TEST_CASE("the crack summary: count, mean and total width, mean length", "[crack]") {

@@ -16,6 +16,7 @@
 using ydry::InputError;
 using ydry::MeshInput;
 using ydry::read_gmsh;
+using ydry_test::kOneTriangleMsh;
 
 namespace {
 
@@ -47,16 +48,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   REQUIRE(at != std::string::npos);
   return text.replace(at, from.size(), to);
 }
-
-// One triangle (sparse node tags 10, 20, 30) in surface 1 of physical surface "soil".
-// Line numbers: 10 the surface, 16 the second node tag, 19 its coordinates, 24 the element
-// block header, 25 the element.
-const std::string one_triangle =
-    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
-    "$PhysicalNames\n1\n2 1 \"soil\"\n$EndPhysicalNames\n"
-    "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 1 0\n$EndEntities\n"
-    "$Nodes\n1 3 10 30\n2 1 0 3\n10\n20\n30\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
-    "$Elements\n1 1 1 1\n2 1 2 1\n1 30 10 20\n$EndElements\n";
 
 double triangle_area(const MeshInput& mesh, std::size_t t) {
   const auto a = mesh.tri[3 * t], b = mesh.tri[3 * t + 1], c = mesh.tri[3 * t + 2];
@@ -137,7 +128,7 @@ TEST_CASE("gmsh: parametric node coordinates are skipped", "[gmsh]") {
 }
 
 TEST_CASE("gmsh: sparse node tags become dense vertex indices", "[gmsh]") {
-  const MeshInput mesh = read_gmsh(write_temp("one_triangle.msh", one_triangle));
+  const MeshInput mesh = read_gmsh(write_temp("one_triangle.msh", kOneTriangleMsh));
   CHECK(mesh.vx == std::vector<double>{0, 1, 0});
   CHECK(mesh.vy == std::vector<double>{0, 0, 1});
   CHECK(mesh.tri == std::vector<ydry::index_t>{2, 0, 1});  // node tags 30 10 20
@@ -146,7 +137,7 @@ TEST_CASE("gmsh: sparse node tags become dense vertex indices", "[gmsh]") {
 }
 
 TEST_CASE("gmsh: unknown sections are skipped", "[gmsh]") {
-  const auto text = one_triangle + "$NodeData\n1\n\"h\"\n1\n0.0\n3\n0\n1\n3\n10 1\n20 1\n30 1\n"
+  const auto text = kOneTriangleMsh + "$NodeData\n1\n\"h\"\n1\n0.0\n3\n0\n1\n3\n10 1\n20 1\n30 1\n"
                                    "$EndNodeData\n";
   CHECK(read_gmsh(write_temp("node_data.msh", text)).triangle_count() == 1);
 }
@@ -159,27 +150,27 @@ TEST_CASE("gmsh: errors name the file and line", "[gmsh]") {
     CHECK_THAT(message, Catch::Contains("2.2"));
   }
   SECTION("binary file") {
-    const auto path = write_temp("binary.msh", replaced(one_triangle, "4.1 0 8", "4.1 1 8"));
+    const auto path = write_temp("binary.msh", replaced(kOneTriangleMsh, "4.1 0 8", "4.1 1 8"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":2: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("binary"));
   }
   SECTION("quadrangle") {
     const auto path = write_temp(
-        "quad.msh", replaced(one_triangle, "2 1 2 1\n1 30 10 20", "2 1 3 1\n1 30 10 20 40"));
+        "quad.msh", replaced(kOneTriangleMsh, "2 1 2 1\n1 30 10 20", "2 1 3 1\n1 30 10 20 40"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":24: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("element type 3"));
   }
   SECTION("surface without a physical surface") {
     const auto path = write_temp(
-        "no_physical.msh", replaced(one_triangle, "1 0 0 0 1 1 0 1 1 0", "1 0 0 0 1 1 0 0 0"));
+        "no_physical.msh", replaced(kOneTriangleMsh, "1 0 0 0 1 1 0 1 1 0", "1 0 0 0 1 1 0 0 0"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":24: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("no physical surface"));
   }
   SECTION("truncated $Nodes") {
-    const auto nodes_cut = one_triangle.substr(0, one_triangle.find("\n30\n") + 1);
+    const auto nodes_cut = kOneTriangleMsh.substr(0, kOneTriangleMsh.find("\n30\n") + 1);
     const auto path = write_temp("truncated.msh", nodes_cut);
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":16: mesh.file: "));
@@ -187,21 +178,21 @@ TEST_CASE("gmsh: errors name the file and line", "[gmsh]") {
   }
   SECTION("node off the plane z = 0") {
     const auto path =
-        write_temp("not_planar.msh", replaced(one_triangle, "\n1 0 0\n", "\n1 0 1e-6\n"));
+        write_temp("not_planar.msh", replaced(kOneTriangleMsh, "\n1 0 0\n", "\n1 0 1e-6\n"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":19: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("not planar"));
   }
   SECTION("element on an unknown node") {
     const auto path =
-        write_temp("unknown_node.msh", replaced(one_triangle, "1 30 10 20", "1 30 10 21"));
+        write_temp("unknown_node.msh", replaced(kOneTriangleMsh, "1 30 10 20", "1 30 10 21"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":25: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("node 21"));
   }
   SECTION("partitioned mesh") {
     const auto path = write_temp(
-        "partitioned.msh", replaced(one_triangle, "$Nodes\n", "$PartitionedEntities\n$Nodes\n"));
+        "partitioned.msh", replaced(kOneTriangleMsh, "$Nodes\n", "$PartitionedEntities\n$Nodes\n"));
     const auto message = gmsh_error(path);
     CHECK(starts_with(message, path + ":12: mesh.file: "));
     CHECK_THAT(message, Catch::Contains("partitioned"));

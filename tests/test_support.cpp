@@ -61,6 +61,13 @@ gf_II = 3.0
   return ydry::load_deck(dir.file("block.toml"), sets);
 }
 
+const std::string kOneTriangleMsh =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$PhysicalNames\n1\n2 1 \"soil\"\n$EndPhysicalNames\n"
+    "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 1 0\n$EndEntities\n"
+    "$Nodes\n1 3 10 30\n2 1 0 3\n10\n20\n30\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+    "$Elements\n1 1 1 1\n2 1 2 1\n1 30 10 20\n$EndElements\n";
+
 CommandResult run_ydry(const std::string& arguments) {
   const std::string command = std::string(YDRY_EXECUTABLE) + " " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");

@@ -52,6 +52,11 @@ void on_1_and_2_threads(Body body) {
   }
 }
 
+// A Gmsh 4.1 file of one triangle (sparse node tags 10, 20, 30) in surface 1 of physical
+// surface "soil", and no physical curve. Line numbers: 10 the surface, 16 the second node
+// tag, 19 its coordinates, 24 the element block header, 25 the element.
+extern const std::string kOneTriangleMsh;
+
 struct CommandResult {
   int exit_code;
   std::string output;  // stdout and stderr together

@@ -1,10 +1,11 @@
-"""Shared helpers for the verification check scripts.
+"""Shared helpers for the verification check scripts and the scripts that read runs.
 
 Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, list
-the frames of its .pvd and read them (the last one as arrays), and print the suite verdict
-lines `CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
+the frames of its .pvd and read them (any frame, or the last one, as arrays), find the
+displacement of the crack lines, and print the suite verdict lines
+`CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
 shrinkage, fracture_modeI, fracture_modeII, crack_moisture and the contact cases (strip1d
-keeps its own copy), and for reading frames by scripts/render_frame.py.
+keeps its own copy), and by scripts/render_frame.py and scripts/plot_run.py.
 """
 import argparse
 import json
@@ -15,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 REPO = Path(__file__).resolve().parents[1]
@@ -28,6 +30,14 @@ def arguments(doc, here):
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     return args
+
+
+def script_parser(doc):
+    """An argument parser for a script whose docstring is `doc`: its first line describes the
+    script, the rest (examples) ends the --help text as written."""
+    return argparse.ArgumentParser(description=doc.splitlines()[0],
+                                   formatter_class=argparse.RawDescriptionHelpFormatter,
+                                   epilog="\n".join(doc.splitlines()[2:]))
 
 
 def run_ydry(ydry, deck, outdir, overrides=()):
@@ -81,38 +91,75 @@ def read_grid(path):
     return reader.GetOutput()
 
 
-def _last_grid(outdir, part):
-    """One part of the last frame of the run's .pvd (part 0: the solid, part 1: the cracks)."""
+def last_frame_files(outdir):
+    """{part: path} of the last frame of the run's .pvd (part 0: the solid, part 1: the cracks)."""
     pvd = next(Path(outdir).glob("*.pvd"))
-    return read_grid(list(frames(pvd).values())[-1][part])
+    return list(frames(pvd).values())[-1]
 
 
-def _cell_arrays(grid):
-    data = grid.GetCellData()
+def _arrays(data):
     return {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i)) for i in range(data.GetNumberOfArrays())}
 
 
-def last_frame(outdir):
-    """The solid in the last frame: a dict with the reference point coordinates x0 (n x 2),
-    displacement u (n x 2), triangle connectivity (m x 3), triangle reference areas (m) and
-    every cell array (e.g. stress, m x 3)."""
-    grid = _last_grid(outdir, 0)
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+def solid_arrays(grid):
+    """One frame's solid (part 0, a grid from read_grid) as a dict: the current point
+    coordinates x (n x 2), the reference ones x0 and the displacement u (n x 2), triangle
+    connectivity (m x 3), triangle reference areas (m), the point arrays under "point_data"
+    (e.g. moisture, n), and every cell array (e.g. stress, m x 3)."""
+    x = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
     u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))[:, :2]
     cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 3)
-    x0 = points - u
+    x0 = x - u
     a, b, c = x0[cells[:, 0]], x0[cells[:, 1]], x0[cells[:, 2]]
     area = 0.5 * np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
-    return {"x0": x0, "u": u, "cells": cells, "area": area, **_cell_arrays(grid)}
+    return {"x": x, "x0": x0, "u": u, "cells": cells, "area": area,
+            "point_data": _arrays(grid.GetPointData()), **_arrays(grid.GetCellData())}
+
+
+def crack_arrays(grid):
+    """One frame's broken joints (part 1, a grid from read_grid) as a dict: their end points
+    in the current configuration, ends (m x 2 x 2), the ids of those points in the grid,
+    cells (m x 2), and every cell array (opening, slip). A frame without any has m = 0."""
+    if grid.GetNumberOfCells() == 0:
+        return {"ends": np.zeros((0, 2, 2)), "cells": np.zeros((0, 2), dtype=int),
+                **_arrays(grid.GetCellData())}
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
+    return {"ends": points[cells], "cells": cells, **_arrays(grid.GetCellData())}
+
+
+def last_frame(outdir):
+    """The solid in the last frame (solid_arrays)."""
+    return solid_arrays(read_grid(last_frame_files(outdir)[0]))
 
 
 def last_cracks(outdir):
-    """The broken joints in the last frame: a dict with their end points in the current
-    configuration, ends (m x 2 x 2), and every cell array (opening, slip)."""
-    grid = _last_grid(outdir, 1)
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
-    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
-    return {"ends": points[cells], **_cell_arrays(grid)}
+    """The broken joints in the last frame (crack_arrays)."""
+    return crack_arrays(read_grid(last_frame_files(outdir)[1]))
+
+
+def corners(bulk, at, warp=1.0):
+    """For each point in `at` (n x 3): the ids of the points of the solid's grid `bulk` at the
+    reference vertex of the nearest point (the corners of every triangle meeting there, on
+    both faces of a crack). The solid's points are its reference ones plus warp times the
+    displacement."""
+    x = vtk_to_numpy(bulk.GetPoints().GetData())
+    u = vtk_to_numpy(bulk.GetPointData().GetArray("displacement"))
+    _, vertex, count = np.unique(np.round((x - warp * u) * 1e9), axis=0, return_inverse=True,
+                                 return_counts=True)
+    groups = np.split(np.argsort(vertex, kind="stable"), np.cumsum(count)[:-1])
+    locator = vtkStaticPointLocator()
+    locator.SetDataSet(bulk)
+    locator.BuildLocator()
+    return [groups[vertex[locator.FindClosestPoint(point)]] for point in at]
+
+
+def crack_displacement(bulk, cracks):
+    """The displacement at the ends of the crack lines (grid `cracks`): the mean over the
+    corners of the solid's grid `bulk` at their vertices (n x 3)."""
+    u = vtk_to_numpy(bulk.GetPointData().GetArray("displacement"))
+    ends = vtk_to_numpy(cracks.GetPoints().GetData())
+    return np.array([u[ids].mean(axis=0) for ids in corners(bulk, ends)])
 
 
 def relative_error(value, exact):

@@ -21,6 +21,7 @@
 #include "ycrack/cracks_csv.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
+#include "ycrack/surface_profile.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {
@@ -249,11 +250,17 @@ int run(const RunOptions& opt) {
   std::ostringstream reactions;
   reactions << "time_s,boundary,reaction_x_N,reaction_y_N,mean_ux_m,mean_uy_m,work_J\n";
   CracksCsv cracks_csv{outdir + "/cracks.csv", {}};
+  // surface.csv profiles the boundary named "top" (the soil's free surface) at every frame.
+  const auto top = state.boundary_edges.find("top");
+  const bool surface = deck.mechanics && top != state.boundary_edges.end();
+  if (deck.mechanics && !surface) log.info("no surface.csv: the mesh has no boundary named \"top\"");
+  SurfaceCsv surface_csv{outdir + "/surface.csv", {}};
   std::uint64_t capped_reported = 0;
   long next_frame = 0;
   const auto write_outputs = [&](bool completed) {
     if (state.time_s >= next_frame * deck.output_interval_s * (1.0 - 1e-12) || completed) {
       write_frame(frames, state, state.time_s);
+      if (surface) append_surface_csv(surface_csv, state.time_s, surface_profile(state, top->second));
       next_frame = std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12))) + 1;
     }
     const std::vector<Crack> cracks =
@@ -305,7 +312,8 @@ int run(const RunOptions& opt) {
   }
   tail
        << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, "
-       << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << "summary.json, deck.toml, log.txt";
+       << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << (surface ? "surface.csv, " : "")
+       << "summary.json, deck.toml, log.txt";
   log.info(tail.str());
   return 0;
 }
