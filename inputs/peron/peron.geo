@@ -26,17 +26,17 @@ base_below = 0.003;    // base thickness under the notch bottoms
 
 // The interface, left to right: flat top of the base, then per notch down, across, up.
 p = newp;
-Point(p) = {0, 0, 0, hn};
+Point(p) = {0, 0, 0};
 first = p;
 For i In {0 : notches - 1}
   xa = margin + i * pitch;
-  Point(p + 4 * i + 1) = {xa, 0, 0, hn};
-  Point(p + 4 * i + 2) = {xa, -notch_depth, 0, hn};
-  Point(p + 4 * i + 3) = {xa + notch_width, -notch_depth, 0, hn};
-  Point(p + 4 * i + 4) = {xa + notch_width, 0, 0, hn};
+  Point(p + 4 * i + 1) = {xa, 0, 0};
+  Point(p + 4 * i + 2) = {xa, -notch_depth, 0};
+  Point(p + 4 * i + 3) = {xa + notch_width, -notch_depth, 0};
+  Point(p + 4 * i + 4) = {xa + notch_width, 0, 0};
 EndFor
 last = p + 4 * notches + 1;
-Point(last) = {L, 0, 0, hn};
+Point(last) = {L, 0, 0};
 
 interface[] = {};
 For k In {first : last - 1}
@@ -46,8 +46,8 @@ For k In {first : last - 1}
 EndFor
 
 // Soil: the interface, its right end, its top, its left end.
-p_top_right = newp; Point(p_top_right) = {L, H, 0, h};
-p_top_left = newp;  Point(p_top_left) = {0, H, 0, h};
+p_top_right = newp; Point(p_top_right) = {L, H, 0};
+p_top_left = newp;  Point(p_top_left) = {0, H, 0};
 right = newl; Line(right) = {last, p_top_right};
 top = newl;   Line(top) = {p_top_right, p_top_left};
 left = newl;  Line(left) = {p_top_left, first};
@@ -55,10 +55,10 @@ Curve Loop(1) = {interface[], right, top, left};
 soil = 1; Plane Surface(soil) = {1};
 
 // Base: the interface seen from below, with an overhang at each end.
-b1 = newp; Point(b1) = {L + overhang, 0, 0, hn};
-b2 = newp; Point(b2) = {L + overhang, -notch_depth - base_below, 0, hb};
-b3 = newp; Point(b3) = {-overhang, -notch_depth - base_below, 0, hb};
-b4 = newp; Point(b4) = {-overhang, 0, 0, hn};
+b1 = newp; Point(b1) = {L + overhang, 0, 0};
+b2 = newp; Point(b2) = {L + overhang, -notch_depth - base_below, 0};
+b3 = newp; Point(b3) = {-overhang, -notch_depth - base_below, 0};
+b4 = newp; Point(b4) = {-overhang, 0, 0};
 c1 = newl; Line(c1) = {last, b1};
 c2 = newl; Line(c2) = {b1, b2};
 c3 = newl; Line(c3) = {b2, b3};
@@ -68,6 +68,7 @@ Curve Loop(2) = {c1, c2, c3, c4, c5, interface[]};
 base = 2; Plane Surface(base) = {2};
 
 // Element size: hn on the interface, growing to h (soil) or hb (base) over the notch depth.
+// The fields alone set it (not the points), on the curves too: Restrict lists them.
 Field[1] = Distance;
 Field[1].CurvesList = {interface[]};
 Field[1].NumPointsPerCurve = 20;
