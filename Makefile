@@ -2,7 +2,7 @@
 # are the two commands a newcomer needs (README).
 BUILD    ?= build
 JOBS     ?= $(shell nproc)
-DECK     ?= inputs/demo/drying_layer.toml
+DECK     ?= inputs/peron/peron.toml
 OUTDIR   ?= runs/$(basename $(notdir $(DECK)))
 PYTHON   ?= /usr/bin/python3
 # Test time on CI: ctest runs its cases on every core.

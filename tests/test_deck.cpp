@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "tests/test_support.h"
+#include "ycore/run.h"
 
 using ydry_test::run_ydry;
 
@@ -153,4 +154,16 @@ TEST_CASE("a non-empty output folder that is not a ydry run is refused without -
   CHECK(run_ydry(args + " --force").exit_code == 0);
   CHECK(run_ydry(args).exit_code == 0);  // now it holds an earlier run: reused
   CHECK(ydry_test::read_text(dir.file("out/thesis.tex")) == "precious");
+}
+
+TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
+  std::vector<std::filesystem::path> decks;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(YDRY_SOURCE_DIR "/inputs"))
+    if (entry.path().extension() == ".toml") decks.push_back(entry.path());
+  CHECK(decks.size() >= 2);  // the demo and the Peron case
+  for (const auto& deck : decks) {
+    INFO(deck.string());
+    // One pseudo-step of the initial equilibrium is enough to build everything a run needs.
+    CHECK_NOTHROW(ydry::setup_state(ydry::load_deck(deck.string(), {"solver.relaxation_max_steps=1"})));
+  }
 }
