@@ -114,6 +114,9 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"heterogeneity on a rigid material", "initial_moisture = 0.2",
        "initial_moisture = 0.2\nrigid = true\nstrength_heterogeneity = 0.2", "",
        "deck.toml:18: materials.soil.strength_heterogeneity: a rigid material has no joints to weaken"},
+      {"mass scaling in a dynamic run", "", "",
+       "--set solver.integration=dynamic --set solver.node_mass_scaling=true",
+       "solver.node_mass_scaling: needs integration = \"quasi_static\""},
   };
   for (const Case& c : cases) {
     ydry_test::TempDir dir;

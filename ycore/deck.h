@@ -107,6 +107,7 @@ struct Deck {
   double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
+  bool node_mass_scaling = true;      // quasi-static: nodes stiff for their mass made heavier
   // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
   // instead of relaxing to equilibrium after each coupling step.
   bool dynamic = false;

@@ -3,6 +3,8 @@
 // brings it to equilibrium after each step of the moisture clock.
 #pragma once
 
+#include <vector>
+
 #include <cstdint>
 
 #include "ycore/deck.h"
@@ -15,9 +17,19 @@ namespace ydry {
 // solid needs and the deck lacks, or for contradictory boundary conditions.
 void init_mechanics(State& state, const Deck& deck);
 
+// Per node, an upper bound of the row sum of its element, joint and contact stiffness, N/m
+// (Gershgorin); 0 for a node that is fixed in both directions or not mechanical.
+std::vector<double> node_stiffness_bound(const State& state);
+
 // The largest stable step of the central-difference integration times `safety`: per node,
-// omega^2 <= (row sum of its element and joint stiffness) / mass (Gershgorin).
+// omega^2 <= node_stiffness_bound / mass.
 double stable_mechanics_step(const State& state, double safety);
+
+// Quasi-static runs: only the equilibrium matters, so the inertia of each node is free
+// (fdem-notes section 4). Nodes stiffer for their mass than the median node (small elements
+// at a refined boundary, notch teeth) are made heavier until they are stable at the median
+// node's step, so the few smallest elements no longer set the step of all.
+void scale_node_masses_to_common_step(State& state);
 
 // Element internal forces and gravity: overwrites fx, fy of every node (each triangle owns
 // its three nodes) and the element stress.

@@ -219,14 +219,16 @@ void init_mechanics(State& s, const Deck& deck) {
   set_joint_data(s, deck);
   set_constraints(s, deck);
   init_contact(s, deck);
+  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s);
   mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
 }
 
-double stable_mechanics_step(const State& s, double safety) {
+std::vector<double> node_stiffness_bound(const State& s) {
   const Nodes& n = s.nodes;
   const double thickness = s.mechanics.thickness_m;
-  double omega2_max = 0.0;
+  const double contact = contact_stiffness_bound(s);  // any corner may come to lie on a crack face
+  std::vector<double> bound(n.size(), 0.0);
   for (std::size_t e = 0; e < s.triangles.size(); ++e) {
     const MaterialModel& m = s.materials[s.triangles.material[e]];
     if (!m.mechanical) continue;
@@ -243,11 +245,29 @@ double stable_mechanics_step(const State& s, double safety) {
       double k = thickness * (m.lambda + 2.0 * m.mu) * edge[a] * perimeter / (2.0 * s.triangles.area0[e]);
       for (int slot = 0; slot < 2; ++slot)
         if (n.joint_slot[2 * (i + a) + slot] != kNoIndex) k += m.penalty * thickness;  // row sum ~ p t
-      k += contact_stiffness_bound(s);  // any corner may come to lie on a crack face
-      omega2_max = std::max(omega2_max, k / n.m[i + a]);
+      bound[i + a] = k + contact;
     }
   }
+  return bound;
+}
+
+double stable_mechanics_step(const State& s, double safety) {
+  const std::vector<double> bound = node_stiffness_bound(s);
+  double omega2_max = 0.0;
+  for (std::size_t i = 0; i < bound.size(); ++i) omega2_max = std::max(omega2_max, bound[i] / s.nodes.m[i]);
   return omega2_max > 0.0 ? safety * 2.0 / std::sqrt(omega2_max) : 1.0;
+}
+
+void scale_node_masses_to_common_step(State& s) {
+  Nodes& n = s.nodes;
+  const std::vector<double> bound = node_stiffness_bound(s);
+  std::vector<double> omega2;
+  for (std::size_t i = 0; i < bound.size(); ++i)
+    if (bound[i] > 0.0) omega2.push_back(bound[i] / n.m[i]);
+  if (omega2.empty()) return;
+  auto median = omega2.begin() + omega2.size() / 2;
+  std::nth_element(omega2.begin(), median, omega2.end());
+  for (std::size_t i = 0; i < bound.size(); ++i) n.m[i] = std::max(n.m[i], bound[i] / *median);
 }
 
 }  // namespace ydry
