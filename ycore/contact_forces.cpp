@@ -22,7 +22,7 @@ EdgeProjection project(const Nodes& n, index_t i, index_t e) {
   const index_t f = next_corner(e);
   EdgeProjection p;
   const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
-  p.length = std::hypot(ex, ey);
+  p.length = std::sqrt(ex * ex + ey * ey);
   p.tx = ex / p.length, p.ty = ey / p.length;
   const double dx = n.x[i] - n.x[e], dy = n.y[i] - n.y[e];
   p.along = (dx * p.tx + dy * p.ty) / p.length;
@@ -43,7 +43,7 @@ bool touches(const Nodes& n, const Contact& c, index_t i, const EdgeProjection& 
     const index_t f = next_corner(e);
     const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
     // Own outward normal (ey, -ex) / |e| against the edge's (ty, -tx).
-    if (ey * p.ty + ex * p.tx < -kFacing * std::hypot(ex, ey)) return true;
+    if (ey * p.ty + ex * p.tx < -kFacing * std::sqrt(ex * ex + ey * ey)) return true;
   }
   return false;
 }

@@ -23,7 +23,7 @@ inline CorotationalState corotational_state(const Nodes& n, const Triangles& tri
   const double F00 = ax * inv[0] + bx * inv[2], F01 = ax * inv[1] + bx * inv[3];
   const double F10 = ay * inv[0] + by * inv[2], F11 = ay * inv[1] + by * inv[3];
   CorotationalState k;
-  const double r = std::hypot(F00 + F11, F10 - F01);
+  const double r = std::sqrt((F00 + F11) * (F00 + F11) + (F10 - F01) * (F10 - F01));
   k.c = (F00 + F11) / r;
   k.s = (F10 - F01) / r;
   k.e00 = k.c * F00 + k.s * F10 - 1.0;  // U = R^T F

@@ -3,6 +3,7 @@
 // damage commit and the crack statistics.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "ycore/state.h"
@@ -19,6 +20,22 @@ struct PointTraction {
   double damage = 0;             // D of the current opening and slip, before the history
 };
 
+// Helpers of cohesive_traction, which is inline: the force kernel calls it three times per
+// joint and step.
+namespace joint_law_detail {
+// The pre-peak shape of Fig. 2a, b: 2r - r^2 up to the peak, 1 beyond.
+inline double hardening(double r) { return r < 1.0 ? r * (2.0 - r) : 1.0; }
+
+// Softening length from peak to zero stress that makes the total work per unit area equal
+// the fracture energy: (2/3) f delta_p before the peak plus area(z) f delta_t after it.
+// A fracture energy smaller than the pre-peak work (possible for the mode II strength under
+// high compression) keeps a minimal softening length instead.
+inline double softening_length(double fracture_energy, double strength, double peak) {
+  const double t = (fracture_energy - 2.0 / 3.0 * strength * peak) / (softening_curve_area() * strength);
+  return std::max(t, 1e-3 * peak);
+}
+}  // namespace joint_law_detail
+
 // Traction at a joint point of initial length h0 with normal opening o and slip s (m), given
 // the point's committed damage. The joint's strength_factor multiplies the material's f_t and
 // c (strength heterogeneity; the fracture energies stay the material's). Pre-peak
@@ -27,8 +44,31 @@ struct PointTraction {
 // that pre-peak plus softening work is exactly gf_I (gf_II) per unit area. Mode II strength
 // c + sigma_n tan(phi) under compression (Fig. 2b). Compression is a linear penalty p o / h0.
 // In a material that is not breakable the joint is the linear penalty in both directions.
-PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
-                                double s, double committed_damage);
+inline PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
+                                       double s, double committed_damage) {
+  const double k = m.penalty / h0;  // Pa per m: the initial slope of both branches
+  if (!m.breakable) return {k * o, k * s, 0.0};
+
+  PointTraction t;
+  const double ft = strength_factor * m.tensile_strength;
+  const double op = 2.0 * ft / k;
+  const double compression = o < 0.0 ? -k * o : 0.0;
+  const double fs = strength_factor * m.cohesion + compression * m.tan_friction;  // Fig. 2b
+  const double abs_s = std::fabs(s);
+  // Softening lengths only past a peak: most joints, most of the time, are before both.
+  const double dn = o > op ? (o - op) / joint_law_detail::softening_length(m.gf_I, ft, op) : 0.0;
+  double ds = 0.0, sp = 0.0;
+  if (fs > 0.0) {
+    sp = 2.0 * fs / k;
+    if (abs_s > sp) ds = (abs_s - sp) / joint_law_detail::softening_length(m.gf_II, fs, sp);
+  }
+  if (dn > 0.0 || ds > 0.0) t.damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c: failure at D = 1
+  const double damage = std::max(t.damage, committed_damage);
+  const double z = damage > 0.0 ? softening_curve(damage) : 1.0;
+  t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / op) * z * ft;
+  if (fs > 0.0) t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * z * fs, s);
+  return t;
+}
 
 // A joint's three integration points: the two ends and the middle, with Simpson weights of
 // the initial length, and the share of end 0 (nodes 0, 3) in each point's opening and slip.
