@@ -117,6 +117,37 @@ TEST_CASE("the width threshold drops the narrower crack", "[crack]") {
   CHECK(find_cracks(s, 300e-6).empty());
 }
 
+TEST_CASE("broken stretches linked by a joint in the process zone are one crack; by a slightly damaged one, two", "[crack]") {
+  // On x = 20 mm: broken from the top down to 10 mm and from 5 mm to the bottom; the joint
+  // between (5 to 10 mm) carries committed damage `d` at its three points.
+  for (const double d : {kProcessZoneDamage, 0.1}) {
+    INFO("damage of the linking joint " << d);
+    State s = rectangle_state();
+    REQUIRE(break_vertical(s, 0.02, 0.01, kHeight) == 2);
+    REQUIRE(break_vertical(s, 0.02, 0.0, 0.005) == 1);
+    s.joints.damage.assign(3 * s.joints.size(), 0.0);
+    for (std::size_t j = 0; j < s.joints.size(); ++j) {
+      const index_t* n = &s.joints.node[4 * j];
+      const double ylo = std::min(s.nodes.y0[n[0]], s.nodes.y0[n[1]]);
+      if (std::abs(s.nodes.x0[n[0]] - 0.02) < 1e-12 && std::abs(s.nodes.x0[n[1]] - 0.02) < 1e-12 &&
+          std::abs(ylo - 0.005) < 1e-12)
+        for (int p = 0; p < 3; ++p) s.joints.damage[3 * j + p] = d;
+    }
+    shift_right_of(s, 0.02, 100e-6);
+    const std::vector<Crack> cracks = find_cracks(s, 0.0);
+    if (d >= kProcessZoneDamage) {
+      REQUIRE(cracks.size() == 1);
+      CHECK(cracks[0].joints.size() == 4);
+      CHECK(cracks[0].length_m == Approx(0.015).epsilon(1e-12));  // the broken joints only
+      CHECK(cracks[0].penetrating);
+      CHECK(cracks[0].width_m == Approx(100e-6).epsilon(1e-9));   // at the mouth on the top
+    } else {
+      REQUIRE(cracks.size() == 2);
+      CHECK(cracks[0].length_m + cracks[1].length_m == Approx(0.015).epsilon(1e-12));
+    }
+  }
+}
+
 TEST_CASE("an internal crack is measured at its highest vertex", "[crack]") {
   // One joint on x = 20 mm from y = 5 mm to 10 mm: no vertex on a surface. Its first
   // triangle's side is pulled back along the normal by 50 um.

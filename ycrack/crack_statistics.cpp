@@ -60,6 +60,17 @@ struct Mouth {
   }
 };
 
+// A joint on the softening branch far enough to be part of a crack's process zone: two of
+// its three points past kProcessZoneDamage (a broken joint has two at D = 1). It links the
+// broken stretches of one crack that zig-zags through the mesh, so they count once, without
+// linking the joints that passed their peak before the strain localised (D stays small there).
+bool in_process_zone(const Joints& joints, std::size_t j) {
+  if (joints.damage.empty()) return false;
+  int past = 0;
+  for (int p = 0; p < 3; ++p) past += joints.damage[3 * j + p] >= kProcessZoneDamage;
+  return past >= 2;
+}
+
 }  // namespace
 
 std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
@@ -70,19 +81,27 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
 
   std::vector<index_t> parent(nvertices);
   std::iota(parent.begin(), parent.end(), index_t(0));
+  std::vector<std::uint8_t> open(joints.size(), 0);  // broken, or in a crack's process zone
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    open[j] = joints.broken[j] || in_process_zone(joints, j);
+    if (open[j]) unite(parent, n.vertex[joints.node[4 * j]], n.vertex[joints.node[4 * j + 1]]);
+  }
+  std::vector<std::uint8_t> has_broken(nvertices, 0);  // by root
   for (std::size_t j = 0; j < joints.size(); ++j)
-    if (joints.broken[j]) unite(parent, n.vertex[joints.node[4 * j]], n.vertex[joints.node[4 * j + 1]]);
+    if (joints.broken[j]) has_broken[find_root(parent, n.vertex[joints.node[4 * j]])] = 1;
 
   const std::vector<std::uint8_t> surface = surface_vertices(s, nvertices);
   const std::vector<Layer> layers = material_layers(s);
-  // Cracks numbered in the order of their first broken joint.
+  // Cracks numbered in the order of their first open joint.
   std::vector<index_t> crack_of_root(nvertices, kNoIndex);
   std::vector<Crack> cracks;
   std::vector<Mouth> mouths;
   for (index_t j = 0; j < joints.size(); ++j) {
-    if (!joints.broken[j]) continue;
+    if (!open[j]) continue;
     const index_t* jn = &joints.node[4 * j];
-    index_t& k = crack_of_root[find_root(parent, n.vertex[jn[0]])];
+    const index_t root = find_root(parent, n.vertex[jn[0]]);
+    if (!has_broken[root]) continue;
+    index_t& k = crack_of_root[root];
     if (k == kNoIndex) {
       k = static_cast<index_t>(cracks.size());
       cracks.emplace_back();
@@ -90,16 +109,17 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
     }
     Crack& crack = cracks[k];
     crack.joints.push_back(j);
-    crack.length_m += joint_kinematics(n, jn).length;
     const std::uint16_t material = s.triangles.material[triangle_of(jn[0])];
     const Layer& layer = layers[material];
     for (int end = 0; end < 2; ++end) {
       const index_t v = n.vertex[jn[end]];
       const double y0 = n.y0[jn[end]];
-      if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
       const Mouth candidate{v, material, surface[v] != 0, y0};
       if (mouths[k].beaten_by(candidate)) mouths[k] = candidate;
+      if (!joints.broken[j]) continue;  // length and penetration count broken joints only
+      if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
     }
+    if (joints.broken[j]) crack.length_m += joint_kinematics(n, jn).length;
   }
 
   std::vector<index_t> crack_at_mouth(nvertices, kNoIndex);
