@@ -135,9 +135,9 @@ def check_run(run, outdir, verdicts):
     t_last = float(surface["time_s"][-1])
     last = surface["time_s"] == t_last
     print(f"# right end of the top surface, (x0, y0) = ({surface['x0_m'][last][-1] * MM:g}, "
-          f"{surface['y0_m'][last][-1] * MM:g}) mm: u_x {ux * MM:+.4f} mm from {source} "
-          f"(summary.json right_end_displacement_m {number(s['right_end_displacement_m']) * MM:+.4f} mm); "
-          f"paper {RIGHT_END_UX * MM:.2f} mm in magnitude")
+          f"{surface['y0_m'][last][-1] * MM:g}) mm: u_x {ux * MM:+.4f} mm at t = {t_last:g} s from {source} "
+          f"(summary.json right_end_displacement_m {number(s['right_end_displacement_m']) * MM:+.4f} mm at "
+          f"t = {s['time_s']:g} s); paper {RIGHT_END_UX * MM:.2f} mm in magnitude")
     verdicts.below("right_end_ux_rel_error", ydry_case.relative_error(abs(ux), RIGHT_END_UX), RIGHT_END_TOLERANCE)
 
     time = series["time_s"]
@@ -146,8 +146,9 @@ def check_run(run, outdir, verdicts):
     first, stable = run_report.first_crack_time(series), run_report.stabilisation_time(series)
     print(f"# first crack: {'none' if first is None else f'{first:g} s'}; mean width within "
           f"{100 * run_report.STABLE_FRACTION:g} % of its final value from "
-          f"{'(not reached)' if stable is None else f'{stable:g} s'} on; the last {100 * STABLE_WINDOW:g} % of the run is "
-          f"t >= {time[window][0]:g} s ({np.count_nonzero(window)} rows of series.csv)")
+          f"{'(not reached)' if stable is None else f'{stable:g} s'} on; the last "
+          f"{100 * STABLE_WINDOW:g} % of the run is t >= {time[window][0]:g} s "
+          f"({np.count_nonzero(window)} rows of series.csv)")
     verdicts.below("mean_width_change_last_20pct", change, run_report.STABLE_FRACTION)
 
     size = run_report.element_size(surface)
