@@ -61,7 +61,7 @@ def final_cracks(run, t, size):
         if len(at):
             found.append({"x": float(track["x"][at[0]]), "width": float(track["width"][at[0]]),
                           "first": float(track["time"][0])})
-    return found
+    return sorted(found, key=lambda crack: crack["x"])
 
 
 def surface_mouths(surface, t):
