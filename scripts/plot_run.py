@@ -20,7 +20,6 @@ writes into --out (default RUN/plots):
 A moisture-only run has no cracks.csv or surface.csv: the figures that need them are left
 out and the report says so. Exits 2 on a folder that is not a ydry run.
 """
-import json
 import math
 import sys
 from pathlib import Path
@@ -34,9 +33,9 @@ from matplotlib.colors import TwoSlopeNorm  # noqa: E402
 from matplotlib.tri import Triangulation  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
+import run_report  # noqa: E402  (the report: crack tracks, stabilisation, right-end displacement)
 import ydry_case  # noqa: E402  (run folders: tables, frames, crack displacement)
 
-STABLE_FRACTION = 0.02   # stabilisation: the mean width stays within 2 % of its final value
 MM, MINUTE = 1e3, 60.0   # the figures show mm and minutes, as the paper does
 
 
@@ -51,24 +50,6 @@ def arguments():
     return parser.parse_args()
 
 
-def load_run(folder):
-    """The run's tables and facts; exits 2 naming what is missing if it is not a ydry run."""
-    missing = [name for name in ("summary.json", "series.csv") if not (folder / name).is_file()]
-    pvds = sorted(folder.glob("*.pvd")) if folder.is_dir() else []
-    if not folder.is_dir() or missing or not pvds:
-        missing += [] if pvds else ["*.pvd"]
-        what = "missing " + ", ".join(missing) if folder.is_dir() else "no such folder"
-        print(f"plot_run: {folder} is not a ydry run folder ({what})", file=sys.stderr)
-        sys.exit(2)
-    run = {"summary": json.loads((folder / "summary.json").read_text()),
-           "series": ydry_case.read_csv(folder / "series.csv"),
-           "frames": ydry_case.frames(pvds[0])}
-    for name in ("cracks", "surface"):
-        path = folder / f"{name}.csv"
-        run[name] = ydry_case.read_csv(path) if path.is_file() else None
-    return run
-
-
 def save(fig, path):
     fig.savefig(path, dpi=150)
     plt.close(fig)
@@ -77,36 +58,6 @@ def save(fig, path):
 
 def no_data(ax, text):
     ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center", va="center", color="0.4")
-
-
-# ---- the crack tracks: cracks.csv numbers cracks by x at each time, not for life ----------
-
-def track_cracks(cracks, match_m):
-    """Follows each crack through the rows of cracks.csv: a crack continues the track whose
-    last mouth x is nearest, within match_m, pairs taken nearest first; any other starts a new
-    track. Returns the tracks ordered by their last x, each {time, x, width, length} arrays."""
-    x = cracks["x_m"]
-    tracks = []  # the rows of cracks.csv of each track
-    for t in np.unique(cracks["time_s"]):
-        rows = np.flatnonzero(cracks["time_s"] == t)
-        pairs = sorted((abs(x[r] - x[track[-1]]), k, r) for k, track in enumerate(tracks) for r in rows)
-        taken_tracks, taken_rows = set(), set()
-        for distance, k, r in pairs:
-            if distance <= match_m and k not in taken_tracks and r not in taken_rows:
-                taken_tracks.add(k)
-                taken_rows.add(r)
-                tracks[k].append(r)
-        tracks += [[r] for r in rows if r not in taken_rows]
-    return [{"time": cracks["time_s"][rows], "x": x[rows], "width": cracks["width_m"][rows],
-             "length": cracks["length_m"][rows]} for rows in sorted(tracks, key=lambda rows: x[rows[-1]])]
-
-
-def element_size(surface):
-    """The median spacing of the surface points at the first frame, m (NaN without them)."""
-    if surface is None or not len(surface["time_s"]):
-        return math.nan
-    x0 = np.unique(surface["x0_m"][surface["time_s"] == surface["time_s"][0]])
-    return float(np.median(np.diff(x0))) if len(x0) > 1 else math.nan
 
 
 def on_grid(times, track, key):
@@ -118,39 +69,11 @@ def on_grid(times, track, key):
 
 # ---- the report ------------------------------------------------------------------------
 
-def first_crack_time(series):
-    """The first row time with a crack wider than the width threshold, s (None if never)."""
-    rows = np.flatnonzero(series["crack_count"] > 0)
-    return float(series["time_s"][rows[0]]) if len(rows) else None
-
-
-def stabilisation_time(series):
-    """The earliest row time from which on the mean crack width stays within STABLE_FRACTION
-    of its value at the last row, s; None without cracks at the end or when only the last row
-    is within (still changing)."""
-    width = series["mean_crack_width_m"]
-    final = width[-1]
-    if not final > 0:
-        return None
-    outside = np.flatnonzero(~(np.abs(width - final) <= STABLE_FRACTION * final))
-    first_within = outside[-1] + 1 if len(outside) else 0
-    return None if first_within >= len(width) - 1 else float(series["time_s"][first_within])
-
-
-def right_end(run):
-    """(u_x of the right end of the top surface at the last frame, m; where it comes from)."""
-    surface = run["surface"]
-    if surface is not None and len(surface["time_s"]):
-        last = surface["time_s"] == surface["time_s"][-1]
-        return float(surface["ux_m"][last][-1]), "surface.csv: the point of largest x0 at the last frame"
-    return run["summary"]["right_end_displacement_m"], "summary.json right_end_displacement_m"
-
-
 def report(run, folder, figures, skipped):
     s, series = run["summary"], run["series"]
     count = s["crack_count"]
-    first, stable = first_crack_time(series), stabilisation_time(series)
-    ux, ux_from = right_end(run)
+    first, stable = run_report.first_crack_time(series), run_report.stabilisation_time(series)
+    ux, ux_from = run_report.right_end(run)
     fmt_time = lambda t: "never" if t is None else f"{t:g} s ({t / MINUTE:.0f} min)"  # noqa: E731
     fmt_mm = lambda v: "n/a" if v is None or not math.isfinite(v) else f"{v * MM:.4g} mm"  # noqa: E731
     first_text = "n/a (no solid)" if run["cracks"] is None else fmt_time(first)
@@ -178,7 +101,8 @@ def report(run, folder, figures, skipped):
              "- first crack: the first row of series.csv with crack_count >= 1 (resolution: the "
              "series interval).",
              f"- stabilisation: the earliest row time t_s of series.csv such that for every row "
-             f"t >= t_s, |mean crack width(t) - final mean width| <= {100 * STABLE_FRACTION:g} % of "
+             f"t >= t_s, |mean crack width(t) - final mean width| <= "
+             f"{100 * run_report.STABLE_FRACTION:g} % of "
              "the final mean width; not reached when no crack is open at the end or only the last "
              "row is within (still changing).",
              "", "Figures: " + ", ".join(p.name for p in figures)]
@@ -334,11 +258,11 @@ def fig_tracks(run, tracks, path, key, figure):
     if panels == 2:
         mean = axes[1, 0]
         mean.plot(times / MINUTE, series["mean_crack_width_m"] * MM, "k-", label="mean width")
-        stable = stabilisation_time(series)
+        stable = run_report.stabilisation_time(series)
         if stable is not None:
-            final = series["mean_crack_width_m"][-1] * MM
-            mean.axhspan(final * (1 - STABLE_FRACTION), final * (1 + STABLE_FRACTION), color="0.85",
-                         label=f"final mean width $\\pm${100 * STABLE_FRACTION:g} %")
+            final, band = series["mean_crack_width_m"][-1] * MM, run_report.STABLE_FRACTION
+            mean.axhspan(final * (1 - band), final * (1 + band), color="0.85",
+                         label=f"final mean width $\\pm${100 * band:g} %")
             mean.axvline(stable / MINUTE, color="r", ls="--",
                          label=f"stabilised at {stable / MINUTE:.0f} min")
         count = mean.twinx()
@@ -354,7 +278,7 @@ def fig_tracks(run, tracks, path, key, figure):
 
 def main():
     args = arguments()
-    run = load_run(args.run)
+    run = run_report.load_run(args.run, "plot_run")
     out = args.out or args.run / "plots"
     out.mkdir(parents=True, exist_ok=True)
     figures, skipped = [fig_moisture(run, out / "fig18_moisture.png")], []
@@ -368,10 +292,10 @@ def main():
             skipped.append("Fig. 22 (no surface.csv in the run: see its log.txt)")
         else:
             figures.append(fig_surface(run, out / "fig22_surface_displacement.png"))
-        size = element_size(run["surface"])
+        size = run_report.element_size(run["surface"])
         if not math.isfinite(size):  # no surface.csv: a hundredth of the solid's length
             size = 0.005 * np.ptp(ydry_case.last_frame(args.run)["x0"][:, 0])
-        tracks = track_cracks(run["cracks"], 2.0 * size)
+        tracks = run_report.track_cracks(run["cracks"], 2.0 * size)
         figures.append(fig_tracks(run, tracks, out / "fig23_crack_width.png", "width", 23))
         figures.append(fig_tracks(run, tracks, out / "fig24_crack_length.png", "length", 24))
     text = report(run, args.run, figures, skipped)

@@ -5,7 +5,8 @@ the frames of its .pvd and read them (any frame, or the last one, as arrays), fi
 displacement of the crack lines, and print the suite verdict lines
 `CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
 shrinkage, fracture_modeI, fracture_modeII, crack_moisture and the contact cases (strip1d
-keeps its own copy), and by scripts/render_frame.py and scripts/plot_run.py.
+keeps its own copy) and peron, and by scripts/render_frame.py, scripts/plot_run.py and
+run_report.py.
 """
 import argparse
 import json
@@ -22,12 +23,18 @@ from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 REPO = Path(__file__).resolve().parents[1]
 
 
-def arguments(doc, here):
-    """Parse --ydry and --out (default: build/ydry and the case's out/); create --out."""
+def case_parser(doc, here):
+    """An argument parser for a check script: --ydry and --out (default: build/ydry and the
+    case's out/); a case adds its own arguments to it."""
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
     parser.add_argument("--out", type=Path, default=here / "out")
-    args = parser.parse_args()
+    return parser
+
+
+def arguments(doc, here):
+    """Parse --ydry and --out (case_parser); create --out."""
+    args = case_parser(doc, here).parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     return args
 
