@@ -10,6 +10,7 @@ of the run, and blocks that curl up at the cracks (README.md defines each). Prin
 `peron METRIC VALUE TOLERANCE PASS|FAIL` and exits 1 if a check fails, 2 if DIR is not a
 ydry run with cracks and a top surface.
 """
+import json
 import math
 import os
 import sys
@@ -49,6 +50,29 @@ def run_deck(ydry, outdir):
     if wall is not None:
         print(f"# ydry wall time {wall:.0f} s ({wall / 60:.1f} min)")
     return wall is not None
+
+
+def flat(table, prefix=""):
+    """{dotted key: value} of a TOML table's leaves (an array of tables is one value)."""
+    leaves = {}
+    for key, value in table.items():
+        if isinstance(value, dict):
+            leaves.update(flat(value, f"{prefix}{key}."))
+        else:
+            leaves[f"{prefix}{key}"] = value
+    return leaves
+
+
+def deck_differences(outdir, deck):
+    """The keys the shipped deck sets whose value differs in the run's resolved deck.toml, as
+    `key = run value (deck value)` strings (defaults the shipped deck leaves out are not
+    compared); None if the run has no deck.toml."""
+    path = outdir / "deck.toml"
+    if not path.is_file():
+        return None
+    used = flat(tomllib.loads(path.read_text()))
+    return [f"{key} = {json.dumps(used[key]) if key in used else '(missing)'} (deck {json.dumps(value)})"
+            for key, value in flat(deck).items() if used.get(key) != value]
 
 
 def final_cracks(run, t, size):
@@ -112,15 +136,21 @@ def print_cracks(cracks):
 
 def check_run(run, outdir, verdicts):
     s, series, surface = run["summary"], run["series"], run["surface"]
-    deck_end = tomllib.loads(DECK.read_text())["run"]["end_time"]
+    deck = tomllib.loads(DECK.read_text())
     print(f"# run {outdir}: ydry {s['version']}, {s['threads']} threads, wall {s['wall_s']:.0f} s, "
           f"{s['elements']} elements, {s['moisture_steps']} moisture steps")
+    differences = deck_differences(outdir, deck)
+    deck_name = DECK.relative_to(ydry_case.REPO)
+    print(f"# the run has no deck.toml to compare with {deck_name}" if differences is None else
+          f"# the run's deck.toml sets every key of {deck_name} as it does" if not differences else
+          f"# the run's deck.toml differs from {deck_name}: " + "; ".join(differences))
     done = bool(s["completed"])
     if not done:
         print(f"# {outdir} is not a completed run: summary.json says completed = false at "
               f"t = {s['time_s']:g} s (still running, stopped or interrupted); the figures below "
               "are those at that time")
     verdicts.check("completed", done, "true", done)
+    deck_end = deck["run"]["end_time"]
     verdicts.check("end_time_s", f"{s['time_s']:g}", f"{deck_end:g}", s["time_s"] == deck_end)
 
     count = s["crack_count"]
@@ -156,6 +186,9 @@ def check_run(run, outdir, verdicts):
     fraction = curling(cracks, surface_mouths(surface, t_last), size)
     print(f"# cracks counted at the last frame, t = {t_last:g} s (surface element {size * MM:.2f} mm):")
     print_cracks(cracks)
+    top = [crack["width"] for crack in cracks if crack["mouth"] is not None]
+    print(f"# {len(top)} of the {len(cracks)} cracks have their mouth on the top surface"
+          + (f", mean width {np.mean(top) * MM:.4f} mm" if top else ""))
     verdicts.check("curling_fraction", fraction, f">={CURLING_FRACTION:g}", fraction >= CURLING_FRACTION)
 
 
