@@ -71,7 +71,8 @@ def on_grid(times, track, key):
 
 def report(run, folder, figures, skipped):
     s, series = run["summary"], run["series"]
-    count = s["crack_count"]
+    count = "n/a" if s["crack_count"] is None else s["crack_count"]
+    surface_count = "n/a" if s["surface_crack_count"] is None else s["surface_crack_count"]
     first, stable = run_report.first_crack_time(series), run_report.stabilisation_time(series)
     ux, ux_from = run_report.right_end(run)
     fmt_time = lambda t: "never" if t is None else f"{t:g} s ({t / MINUTE:.0f} min)"  # noqa: E731
@@ -88,22 +89,26 @@ def report(run, folder, figures, skipped):
              "| quantity | value |", "|---|---|",
              f"| end time | {fmt_time(s['time_s'])} |",
              f"| final mean moisture | {s['mean_moisture']:.4f} |",
-             f"| crack count | {count if count is not None else 'n/a'} |",
-             f"| mean final crack width | {fmt_mm(s['mean_crack_width_m'])} |",
-             f"| total final crack width | {fmt_mm(s['total_crack_width_m'])} |",
+             f"| crack count: open on the outer surface / all | {surface_count} / {count} |",
+             f"| mean final crack width: surface cracks / all | {fmt_mm(s['mean_surface_crack_width_m'])} / "
+             f"{fmt_mm(s['mean_crack_width_m'])} |",
+             f"| total final crack width: surface cracks / all | {fmt_mm(s['total_surface_crack_width_m'])} / "
+             f"{fmt_mm(s['total_crack_width_m'])} |",
              f"| horizontal displacement of the right end of the surface | {fmt_mm(ux)} |",
              f"| time of the first crack | {first_text} |",
              f"| time of stabilisation | {stable_text} |",
              "", "Definitions:",
              "- crack count and widths: the last row of series.csv (summary.json); a crack counts "
-             "when its mouth opening exceeds run.crack_width_threshold.",
+             "when its mouth opening exceeds run.crack_width_threshold; a surface crack has its mouth "
+             "on the mesh's outer boundary (seen from outside), the others rise from an interface "
+             "with another material or are internal.",
              f"- right-end displacement: {ux_from}.",
              "- first crack: the first row of series.csv with crack_count >= 1 (resolution: the "
              "series interval).",
              f"- stabilisation: the earliest row time t_s of series.csv such that for every row "
-             f"t >= t_s, |mean crack width(t) - final mean width| <= "
+             f"t >= t_s, |mean surface crack width(t) - its final value| <= "
              f"{100 * run_report.STABLE_FRACTION:g} % of "
-             "the final mean width; not reached when no crack is open at the end or only the last "
+             "the final value; not reached when no surface crack is open at the end or only the last "
              "row is within (still changing).",
              "", "Figures: " + ", ".join(p.name for p in figures)]
     if skipped:
@@ -257,17 +262,19 @@ def fig_tracks(run, tracks, path, key, figure):
     ax.set_ylabel(f"crack {'mouth opening' if key == 'width' else 'length'} (mm)")
     if panels == 2:
         mean = axes[1, 0]
-        mean.plot(times / MINUTE, series["mean_crack_width_m"] * MM, "k-", label="mean width")
+        mean.plot(times / MINUTE, series["mean_surface_crack_width_m"] * MM, "k-", label="mean width, surface cracks")
+        mean.plot(times / MINUTE, series["mean_crack_width_m"] * MM, "k:", label="mean width, all cracks")
         stable = run_report.stabilisation_time(series)
         if stable is not None:
-            final, band = series["mean_crack_width_m"][-1] * MM, run_report.STABLE_FRACTION
+            final, band = series["mean_surface_crack_width_m"][-1] * MM, run_report.STABLE_FRACTION
             mean.axhspan(final * (1 - band), final * (1 + band), color="0.85",
                          label=f"final mean width $\\pm${100 * band:g} %")
             mean.axvline(stable / MINUTE, color="r", ls="--",
                          label=f"stabilised at {stable / MINUTE:.0f} min")
         count = mean.twinx()
+        count.step(times / MINUTE, series["surface_crack_count"], "b-", where="post", alpha=0.6)
         count.step(times / MINUTE, series["crack_count"], "b:", where="post")
-        count.set_ylabel("crack count", color="b")
+        count.set_ylabel("crack count: surface (solid), all (dotted)", color="b")
         mean.set_ylabel("mean crack width (mm)")
         mean.legend(fontsize=8, loc="upper left")
     for row in axes[:, 0]:

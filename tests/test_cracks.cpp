@@ -8,10 +8,12 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "tests/test_support.h"
 #include "ycore/build_state.h"
@@ -189,6 +191,8 @@ TEST_CASE("a crack reaching the top splits its surface vertex into two points on
 TEST_CASE("the crack summary: count, mean and total width, mean length", "[crack]") {
   const CrackSummary sum = summarize_cracks(find_cracks(two_crack_state(), 0.0));
   CHECK(sum.count == 2);
+  CHECK(sum.surface_count == 2);  // both open on the top
+  CHECK(sum.surface_total_width_m == sum.total_width_m);
   CHECK(sum.total_width_m == Approx(280e-6).epsilon(1e-9));
   CHECK(sum.mean_width_m == Approx(140e-6).epsilon(1e-9));
   CHECK(sum.mean_length_m == Approx(0.75 * kHeight).epsilon(1e-12));
@@ -197,6 +201,42 @@ TEST_CASE("the crack summary: count, mean and total width, mean length", "[crack
   CHECK(none.total_width_m == 0.0);
   CHECK(std::isnan(none.mean_width_m));
   CHECK(std::isnan(none.mean_length_m));
+  CHECK(std::isnan(none.surface_mean_width_m));
+}
+
+TEST_CASE("a crack rising from the interface with a base is measured there and is no surface crack", "[crack]") {
+  // The rectangle's lowest row of cells (y < 5 mm) is a base: no joints tie it to the soil.
+  Deck deck;
+  deck.materials["soil"] = MaterialDeck{};
+  deck.materials["base"] = MaterialDeck{};
+  MeshInput mesh = generate_rectangle(kWidth, kHeight, kCell, "right", "soil");
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    double y = 0;
+    for (int a = 0; a < 3; ++a) y += mesh.vy[mesh.tri[3 * t + a]] / 3.0;
+    if (y < kCell) mesh.tri_material[t] = "base";
+  }
+  orient_counter_clockwise(mesh);
+  State s = build_state(mesh, deck);
+  REQUIRE(break_vertical(s, 0.01, kCell, 2 * kCell) == 1);   // from the base up to 10 mm
+  REQUIRE(break_vertical(s, 0.03, kHeight - kCell, kHeight) == 1);  // from the top down to 15 mm
+  const std::uint16_t soil = std::uint16_t(std::find(s.material_names.begin(), s.material_names.end(), "soil") -
+                                           s.material_names.begin());
+  for (const auto& [x, opening] : {std::pair{0.01, 100e-6}, std::pair{0.03, 60e-6}})
+    for (index_t t = 0; t < s.triangles.size(); ++t)
+      if (s.triangles.material[t] == soil && centroid_x0(s, t) > x)
+        for (int a = 0; a < 3; ++a) s.nodes.x[corner_node(t, a)] += opening;
+
+  const std::vector<Crack> cracks = find_cracks(s, 0.0);
+  REQUIRE(cracks.size() == 2);
+  CHECK_FALSE(cracks[0].on_outer_surface);
+  CHECK(cracks[0].width_m == Approx(100e-6).epsilon(1e-9));  // at its mouth on the interface
+  CHECK(cracks[1].on_outer_surface);
+  CHECK(cracks[1].width_m == Approx(60e-6).epsilon(1e-9));
+  const CrackSummary sum = summarize_cracks(cracks);
+  CHECK(sum.count == 2);
+  CHECK(sum.surface_count == 1);
+  CHECK(sum.surface_mean_width_m == Approx(60e-6).epsilon(1e-9));
+  CHECK(sum.mean_width_m == Approx(80e-6).epsilon(1e-9));
 }
 
 namespace {
@@ -281,25 +321,26 @@ TEST_CASE("cracks.csv gains a row per crack at each output time and keeps the ea
   const ydry_test::TempDir dir;
   CracksCsv csv{dir.file("cracks.csv"), ""};
   append_cracks_csv(csv, 0.0, find_cracks(rectangle_state(), 1e-5));
-  CHECK(ydry_test::read_text(csv.path) == "time_s,crack_id,x_m,width_m,length_m,penetrating\n");
+  CHECK(ydry_test::read_text(csv.path) == "time_s,crack_id,x_m,width_m,length_m,penetrating,surface\n");
   append_cracks_csv(csv, 7200.0, find_cracks(two_crack_state(), 1e-5));
 
   std::istringstream text(ydry_test::read_text(csv.path));
   std::string header, line;
   std::getline(text, header);
-  CHECK(header == "time_s,crack_id,x_m,width_m,length_m,penetrating");
+  CHECK(header == "time_s,crack_id,x_m,width_m,length_m,penetrating,surface");
   const double expected_width[2] = {200e-6, 80e-6}, expected_length[2] = {kHeight / 2, kHeight};
   int rows = 0;
   while (std::getline(text, line) && rows < 2) {
     double time = 0, x = 0, width = 0, length = 0;
-    int id = -1, penetrating = -1;
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf,%d", &time, &id, &x, &width, &length,
-                        &penetrating) == 6);
+    int id = -1, penetrating = -1, surface = -1;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf,%d,%d", &time, &id, &x, &width, &length,
+                        &penetrating, &surface) == 7);
     CHECK(id == rows);
     CHECK(time == Approx(7200.0).epsilon(1e-15));
     CHECK(width == Approx(expected_width[rows]).epsilon(1e-9));
     CHECK(length == Approx(expected_length[rows]).epsilon(1e-12));
     CHECK(penetrating == rows);  // only the full-height crack, second in x
+    CHECK(surface == 1);         // both open on the top
     ++rows;
   }
   CHECK(rows == 2);

@@ -46,10 +46,12 @@ def main():
             failures.append(f"plot_run.py exited {proc.returncode}")
         failures += [f"{name} not written" for name in FIGURES + ["report.md"] if not (out / name).is_file()]
         if (out / "report.md").is_file():
-            found = re.search(r"^\| crack count \| (\d+) \|$", (out / "report.md").read_text(), re.M)
-            expected = json.loads((run / "summary.json").read_text())["crack_count"]
-            if not found or int(found.group(1)) != expected:
-                failures.append(f"report crack count {found and found.group(1)}, summary.json {expected}")
+            found = re.search(r"^\| crack count: open on the outer surface / all \| (\d+) / (\d+) \|$",
+                              (out / "report.md").read_text(), re.M)
+            summary = json.loads((run / "summary.json").read_text())
+            expected = (summary["surface_crack_count"], summary["crack_count"])
+            if not found or (int(found.group(1)), int(found.group(2))) != expected:
+                failures.append(f"report crack counts {found and found.groups()}, summary.json {expected}")
 
         empty = Path(tmp) / "not_a_run"
         empty.mkdir()

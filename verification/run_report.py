@@ -75,17 +75,18 @@ def first_crack_time(series):
 
 
 def width_deviation(series):
-    """|mean crack width - its value at the last row| / that value, at every row of series.csv;
-    NaN at rows without a crack, and at every row when the last has none."""
-    width = series["mean_crack_width_m"]
+    """|mean surface crack width - its value at the last row| / that value, at every row of
+    series.csv (the cracks open on the outer surface: those an observer sees widen); NaN at rows
+    without one, and at every row when the last has none."""
+    width = series["mean_surface_crack_width_m"]
     final = width[-1] if width[-1] > 0 else math.nan
     return np.abs(width - final) / final
 
 
 def stabilisation_time(series):
-    """The earliest row time from which on the mean crack width stays within STABLE_FRACTION
-    of its value at the last row, s; None without cracks at the end or when only the last row
-    is within (still changing)."""
+    """The earliest row time from which on the mean surface crack width stays within
+    STABLE_FRACTION of its value at the last row, s; None without surface cracks at the end or
+    when only the last row is within (still changing)."""
     deviation = width_deviation(series)
     if math.isnan(deviation[-1]):
         return None

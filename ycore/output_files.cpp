@@ -43,7 +43,8 @@ std::string json_string(const std::string& s) {
 
 const std::vector<std::string> kSeriesColumns = {
     "time_s", "mean_moisture", "water_lost_kg", "water_balance_error", "crack_count",
-    "mean_crack_width_m", "total_crack_width_m", "mean_crack_length_m",
+    "mean_crack_width_m", "total_crack_width_m", "mean_crack_length_m", "surface_crack_count",
+    "mean_surface_crack_width_m", "total_surface_crack_width_m",
     "right_end_displacement_m", "kinetic_energy_J", "relaxation_residual", "broken_joints",
     "elastic_energy_J", "joint_work_J", "fracture_energy_J", "contact_work_J", "external_work_J",
     "gravity_work_J", "mechanical_steps"};

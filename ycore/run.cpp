@@ -94,6 +94,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
   const Energies e = energies(s);
   const double broken = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
   row.insert(row.end(), {double(cracks.count), cracks.mean_width_m, cracks.total_width_m, cracks.mean_length_m,
+                         double(cracks.surface_count), cracks.surface_mean_width_m, cracks.surface_total_width_m,
                          right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
                          e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
                          double(s.mechanics.steps)});

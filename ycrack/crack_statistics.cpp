@@ -11,23 +11,36 @@
 namespace ydry {
 namespace {
 
-// Vertices on an edge that no joint sits on, intact or broken: the free and interface
-// surfaces of every material. A joint sits on the edge starting at its node 0 (first
-// triangle) and at its node 2 (second triangle).
-std::vector<std::uint8_t> surface_vertices(const State& s, index_t nvertices) {
+// Where a vertex lies, for the choice of a crack's mouth.
+enum SurfaceKind : std::uint8_t { kInside = 0, kInterface = 1, kOuterSurface = 2 };
+
+// The vertices on an edge that no joint sits on, intact or broken: on the mesh's outer
+// boundary (an edge of one triangle only: what an observer of the sample sees) or on an
+// interface between materials (an edge two triangles share without a joint). A joint sits on
+// the edge starting at its node 0 (first triangle) and at its node 2 (second triangle).
+std::vector<std::uint8_t> surface_kinds(const State& s, index_t nvertices) {
   const Nodes& n = s.nodes;
   std::vector<std::uint8_t> jointed(n.size(), 0);
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     jointed[s.joints.node[4 * j]] = 1;
     jointed[s.joints.node[4 * j + 2]] = 1;
   }
-  std::vector<std::uint8_t> surface(nvertices, 0);
+  const auto edge_key = [&](index_t c) {
+    const index_t a = n.vertex[c], b = n.vertex[corner_node(triangle_of(c), (c % 3 + 1) % 3)];
+    return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
+  };
+  std::vector<std::uint64_t> edges(n.size());
+  for (index_t c = 0; c < n.size(); ++c) edges[c] = edge_key(c);
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint8_t> kind(nvertices, kInside);
   for (index_t c = 0; c < n.size(); ++c) {
     if (jointed[c]) continue;
-    const index_t next = corner_node(triangle_of(c), (c % 3 + 1) % 3);
-    surface[n.vertex[c]] = surface[n.vertex[next]] = 1;
+    const std::uint64_t key = edge_key(c);
+    const auto same = std::equal_range(edges.begin(), edges.end(), key);
+    const std::uint8_t k = same.second - same.first == 1 ? kOuterSurface : kInterface;
+    for (const index_t v : {index_t(key >> 32), index_t(key & 0xffffffffu)}) kind[v] = std::max(kind[v], k);
   }
-  return surface;
+  return kind;
 }
 
 // Lowest initial y and layer height of each material.
@@ -45,16 +58,16 @@ std::vector<Layer> material_layers(const State& s) {
   return layers;
 }
 
-// The best mouth so far: a surface vertex beats an internal one, then the higher y0, then
-// the lower vertex id.
+// The best mouth so far: a vertex on the outer surface beats one on an interface, which beats
+// an internal one; then the higher y0, then the lower vertex id.
 struct Mouth {
   index_t vertex = kNoIndex;
   std::uint16_t material = 0;
-  bool surface = false;
+  std::uint8_t surface = kInside;
   double y0 = 0;
   bool beaten_by(const Mouth& m) const {
     if (vertex == kNoIndex) return true;
-    if (m.surface != surface) return m.surface;
+    if (m.surface != surface) return m.surface > surface;
     if (m.y0 != y0) return m.y0 > y0;
     return m.vertex < vertex;
   }
@@ -90,7 +103,7 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
   for (std::size_t j = 0; j < joints.size(); ++j)
     if (joints.broken[j]) has_broken[find_root(parent, n.vertex[joints.node[4 * j]])] = 1;
 
-  const std::vector<std::uint8_t> surface = surface_vertices(s, nvertices);
+  const std::vector<std::uint8_t> surface = surface_kinds(s, nvertices);
   const std::vector<Layer> layers = material_layers(s);
   // Cracks numbered in the order of their first open joint.
   std::vector<index_t> crack_of_root(nvertices, kNoIndex);
@@ -114,7 +127,7 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
     for (int end = 0; end < 2; ++end) {
       const index_t v = n.vertex[jn[end]];
       const double y0 = n.y0[jn[end]];
-      const Mouth candidate{v, material, surface[v] != 0, y0};
+      const Mouth candidate{v, material, surface[v], y0};
       if (mouths[k].beaten_by(candidate)) mouths[k] = candidate;
       if (!joints.broken[j]) continue;  // length and penetration count broken joints only
       if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
@@ -125,6 +138,7 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
   std::vector<index_t> crack_at_mouth(nvertices, kNoIndex);
   for (index_t k = 0; k < cracks.size(); ++k) {
     crack_at_mouth[mouths[k].vertex] = k;
+    cracks[k].on_outer_surface = mouths[k].surface == kOuterSurface;
     cracks[k].width_m = -std::numeric_limits<double>::infinity();
     for (const index_t j : cracks[k].joints) {
       const index_t* jn = &joints.node[4 * j];
@@ -153,15 +167,19 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
 
 CrackSummary summarize_cracks(const std::vector<Crack>& cracks) {
   CrackSummary sum;
-  sum.count = static_cast<int>(cracks.size());
   double length = 0;
   for (const Crack& c : cracks) {
+    ++sum.count;
     sum.total_width_m += c.width_m;
     length += c.length_m;
+    if (!c.on_outer_surface) continue;
+    ++sum.surface_count;
+    sum.surface_total_width_m += c.width_m;
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  sum.mean_width_m = cracks.empty() ? nan : sum.total_width_m / sum.count;
-  sum.mean_length_m = cracks.empty() ? nan : length / sum.count;
+  sum.mean_width_m = sum.count ? sum.total_width_m / sum.count : nan;
+  sum.mean_length_m = sum.count ? length / sum.count : nan;
+  sum.surface_mean_width_m = sum.surface_count ? sum.surface_total_width_m / sum.surface_count : nan;
   return sum;
 }
 

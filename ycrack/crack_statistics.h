@@ -13,6 +13,7 @@ struct Crack {
   double width_m = 0;        // normal opening at the mouth (the largest of the joints there)
   double length_m = 0;       // sum of the current lengths of its joints
   bool penetrating = false;  // reaches the bottom of its material's layer
+  bool on_outer_surface = false;  // its mouth is on the mesh's outer boundary (seen from outside)
   std::vector<index_t> joints;  // ascending: its broken and process-zone joints
 };
 
@@ -24,15 +25,22 @@ constexpr double kProcessZoneDamage = 0.5;
 // belong to one crack: broken joints, and joints in a crack's process zone (two of three
 // points at D >= kProcessZoneDamage), which link the broken stretches of a crack that
 // zig-zags; a set of open joints without a broken one is no crack. Length and penetration
-// count broken joints only; the mouth and the width may lie on a process-zone joint. The mouth is the crack's highest vertex (by initial y) on a free or
-// interface surface, an edge that no joint sits on; a crack touching none (internal) is
-// measured at its highest vertex. Penetrating: some vertex within 1e-6 of the layer height of
-// the lowest initial y of the joint's material. O(nodes + joints), deterministic.
+// count broken joints only; the mouth and the width may lie on a process-zone joint. The mouth
+// is the crack's highest vertex (by initial y) on the mesh's outer boundary (an edge of one
+// triangle: the surface an observer sees), else the highest on an interface between materials
+// (an edge two triangles share without a joint: a crack opening from a base), else its
+// highest vertex (an internal crack). Penetrating: some vertex within 1e-6 of the layer height of
+// the lowest initial y of the joint's material. O(nodes log nodes + joints), deterministic.
 std::vector<Crack> find_cracks(const State& state, double width_threshold_m);
 
+// All cracks, and those that open on the outer surface: the cracks an experimenter counts and
+// measures from above (paper Fig. 19: seven surface cracks; a crack rising from the base is
+// seen only in section).
 struct CrackSummary {
   int count = 0;
   double mean_width_m = 0, total_width_m = 0, mean_length_m = 0;  // means NaN without cracks
+  int surface_count = 0;
+  double surface_mean_width_m = 0, surface_total_width_m = 0;
 };
 CrackSummary summarize_cracks(const std::vector<Crack>& cracks);
 

@@ -9,9 +9,9 @@ void append_cracks_csv(CracksCsv& csv, double time_s, const std::vector<Crack>& 
     const Crack& c = cracks[k];
     csv.rows += format_double(time_s) + "," + std::to_string(k) + "," + format_double(c.x_m) + "," +
                 format_double(c.width_m) + "," + format_double(c.length_m) + "," +
-                (c.penetrating ? "1" : "0") + "\n";
+                (c.penetrating ? "1" : "0") + "," + (c.on_outer_surface ? "1" : "0") + "\n";
   }
-  write_file_atomically(csv.path, "time_s,crack_id,x_m,width_m,length_m,penetrating\n" + csv.rows);
+  write_file_atomically(csv.path, "time_s,crack_id,x_m,width_m,length_m,penetrating,surface\n" + csv.rows);
 }
 
 }  // namespace ydry

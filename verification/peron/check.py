@@ -4,7 +4,7 @@
 Runs ydry on inputs/peron/peron.toml (a 295 x 12 mm silt layer drying on a notched rigid base
 for 460,000 s; 30 minutes or more) on every core, or with --run DIR checks a run of that deck
 made before, and compares its final figures with the experiment and the paper: the crack
-count (7 +- 1), the mean crack width (0.836 mm +- 10 %), the horizontal displacement of the
+count and mean width of the cracks open on the top surface (7 +- 1; 0.836 mm +- 10 %), the horizontal displacement of the
 right end of the top surface (|u_x| 0.67 mm +- 15 %), a mean width stable over the last 20 %
 of the run, and blocks that curl up at the cracks (README.md defines each). Prints
 `peron METRIC VALUE TOLERANCE PASS|FAIL` and exits 1 if a check fails, 2 if DIR is not a
@@ -153,13 +153,19 @@ def check_run(run, outdir, verdicts):
     deck_end = deck["run"]["end_time"]
     verdicts.check("end_time_s", f"{s['time_s']:g}", f"{deck_end:g}", s["time_s"] == deck_end)
 
-    count = s["crack_count"]
-    verdicts.check("crack_count", count, f"{CRACKS}+-{CRACKS_TOLERANCE}", abs(count - CRACKS) <= CRACKS_TOLERANCE)
+    # The experiment counts and measures the cracks from above (the paper's seven are surface
+    # cracks; the crack it sees rising from the base is not among them).
+    count = s["surface_crack_count"]
+    print(f"# cracks: {count} open on the top surface, {s['crack_count']} in all (the others rise from "
+          f"the base), mean width of all {number(s['mean_crack_width_m']) * MM:.4f} mm")
+    verdicts.check("surface_crack_count", count, f"{CRACKS}+-{CRACKS_TOLERANCE}",
+                   abs(count - CRACKS) <= CRACKS_TOLERANCE)
 
-    width = number(s["mean_crack_width_m"])
-    print(f"# mean final crack width {width * MM:.4f} mm (experiment {MEAN_WIDTH * MM:.3f} mm, paper "
-          f"0.841 mm), total {number(s['total_crack_width_m']) * MM:.4f} mm")
-    verdicts.below("mean_crack_width_rel_error", ydry_case.relative_error(width, MEAN_WIDTH), WIDTH_TOLERANCE)
+    width = number(s["mean_surface_crack_width_m"])
+    print(f"# mean final surface crack width {width * MM:.4f} mm (experiment {MEAN_WIDTH * MM:.3f} mm, "
+          f"paper 0.841 mm), total {number(s['total_surface_crack_width_m']) * MM:.4f} mm (paper 5.89 mm)")
+    verdicts.below("mean_surface_crack_width_rel_error", ydry_case.relative_error(width, MEAN_WIDTH),
+                   WIDTH_TOLERANCE)
 
     ux, source = run_report.right_end(run)
     t_last = float(surface["time_s"][-1])
@@ -174,12 +180,12 @@ def check_run(run, outdir, verdicts):
     window = time >= (1.0 - STABLE_WINDOW) * time[-1]
     change = float(np.max(run_report.width_deviation(series)[window]))
     first, stable = run_report.first_crack_time(series), run_report.stabilisation_time(series)
-    print(f"# first crack: {'none' if first is None else f'{first:g} s'}; mean width within "
+    print(f"# first crack: {'none' if first is None else f'{first:g} s'}; mean surface crack width within "
           f"{100 * run_report.STABLE_FRACTION:g} % of its final value from "
           f"{'(not reached)' if stable is None else f'{stable:g} s'} on; the last "
           f"{100 * STABLE_WINDOW:g} % of the run is t >= {time[window][0]:g} s "
           f"({np.count_nonzero(window)} rows of series.csv)")
-    verdicts.below("mean_width_change_last_20pct", change, run_report.STABLE_FRACTION)
+    verdicts.below("mean_surface_width_change_last_20pct", change, run_report.STABLE_FRACTION)
 
     size = run_report.element_size(surface)
     cracks = final_cracks(run, t_last, size)
