@@ -107,9 +107,12 @@ int bench(const Case& c) {
   std::printf("mechanics %s: element-steps/s: %.3g at 1 thread, %.3g at %d threads (speed-up %.2f)\n", c.name,
               rate_one, rate_all, max_threads, rate_all / rate_one);
   std::fflush(stdout);
-  if (one.steps == all.steps) return 0;
-  std::fprintf(stderr, "bench_mechanics: %s: %llu steps at 1 thread but %llu at %d: the run depends on the thread count\n",
-               c.name, static_cast<unsigned long long>(one.steps), static_cast<unsigned long long>(all.steps), max_threads);
+  // A check on a large mesh, where every loop runs in parallel (the tests force small ones to).
+  const bool same = one.end.nodes.x == all.end.nodes.x && one.end.nodes.y == all.end.nodes.y &&
+                    one.end.joints.damage == all.end.joints.damage && one.end.moisture.w == all.end.moisture.w;
+  if (same) return 0;
+  std::fprintf(stderr, "bench_mechanics: %s: the state after %d threads differs from the one after 1 thread\n",
+               c.name, max_threads);
   return 1;
 }
 
