@@ -40,10 +40,11 @@ def machine_lines(build):
     build_type = next(line.split("=", 1)[1] for line in cache if line.startswith("CMAKE_BUILD_TYPE:"))
     commit = first_line(["git", "-C", str(REPO), "describe", "--always", "--dirty", "--abbrev=12"])
     load = " ".join(f"{x:.2f}" for x in os.getloadavg())
+    openmp = ", ".join(f"{name}={os.environ.get(name, 'unset')}" for name in ("OMP_NUM_THREADS", "OMP_WAIT_POLICY"))
     return [f"machine: {len(os.sched_getaffinity(0))} cores (nproc), {cpu}",
             f"compiler: {first_line([compiler, '--version'])}, {build_type} build",
             f"commit: {commit}",
-            f"load average at the start (1, 5, 15 min): {load}; OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS', 'unset')}"]
+            f"load average at the start (1, 5, 15 min): {load}; {openmp}"]
 
 
 def run_bench(program, *args):
@@ -81,6 +82,7 @@ def main():
     peron.add_argument("--peron", action="store_true", help="run inputs/peron/peron.toml in full first")
     args = parser.parse_args()
     command = "bench/run_bench.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+    stamp = datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")  # the start
 
     lines = machine_lines(args.build)
     print("\n".join(lines), flush=True)
@@ -96,7 +98,6 @@ def main():
         lines += peron_lines(peron_run)
         print(lines[-1])
 
-    stamp = datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")
     with args.results.open("a") as results:
         results.write(f"\n## {stamp}\n\n`{command.strip()}`\n\n```\n" + "\n".join(lines) + "\n```\n")
     print(f"appended to {args.results}")
