@@ -38,7 +38,12 @@ def machine_lines(build):
     cache = (build / "CMakeCache.txt").read_text().splitlines()
     compiler = next(line.split("=", 1)[1] for line in cache if line.startswith("CMAKE_CXX_COMPILER:"))
     build_type = next(line.split("=", 1)[1] for line in cache if line.startswith("CMAKE_BUILD_TYPE:"))
-    commit = first_line(["git", "-C", str(REPO), "describe", "--always", "--dirty", "--abbrev=12"])
+    commit = first_line(["git", "-C", str(REPO), "rev-parse", "--short=12", "HEAD"])
+    # -dirty for uncommitted changes, but not for the figures an earlier run appended here.
+    changes = subprocess.run(["git", "-C", str(REPO), "status", "--porcelain", "--untracked-files=no"],
+                             capture_output=True, text=True, check=True).stdout.splitlines()
+    if any(not line.endswith(" bench/RESULTS.md") for line in changes):
+        commit += "-dirty"
     load = " ".join(f"{x:.2f}" for x in os.getloadavg())
     openmp = ", ".join(f"{name}={os.environ.get(name, 'unset')}" for name in ("OMP_NUM_THREADS", "OMP_WAIT_POLICY"))
     return [f"machine: {len(os.sched_getaffinity(0))} cores (nproc), {cpu}",
