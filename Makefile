@@ -34,7 +34,7 @@ test: build
 verify: build
 	$(PYTHON) verification/run_all.py --ydry $(BUILD)/ydry
 
-# Throughput figures, appended to bench/RESULTS.md (about 5 minutes on 2 idle cores).
+# Throughput figures, appended to bench/RESULTS.md (2 to 5 minutes on this 2-core machine).
 # PERON_RUN=DIR adds the end-to-end figures of a completed run of the Peron deck;
 # PERON=1 makes that run first, into runs/peron_bench (about 50 minutes).
 bench: build

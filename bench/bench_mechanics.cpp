@@ -1,6 +1,6 @@
 // Mechanical throughput, in element-steps per second: deformable triangles x mechanical
 // steps / seconds of the coupling steps that made them (relaxations with their element,
-// joint and contact forces; once per relaxation also ~50 moisture steps, the breakage commit
+// joint and contact forces; once per relaxation also 50-70 moisture steps, the breakage commit
 // and the split of the moisture nodes: under 1.5 % of the time, bench/RESULTS.md). At 1
 // thread and at all threads, from one and the same state (the runs are bitwise the same, so
 // both do the same work). Figures to report, not tests.
