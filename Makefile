@@ -34,8 +34,12 @@ test: build
 verify: build
 	$(PYTHON) verification/run_all.py --ydry $(BUILD)/ydry
 
+# Throughput figures, appended to bench/RESULTS.md (2 to 5 minutes on this 2-core machine).
+# PERON_RUN=DIR adds the end-to-end figures of a completed run of the Peron deck;
+# PERON=1 makes that run first, into runs/peron_bench (about 50 minutes).
 bench: build
-	$(BUILD)/bench/bench_moisture
+	$(PYTHON) bench/run_bench.py --build $(BUILD) $(if $(PERON_RUN),--peron-run $(PERON_RUN)) \
+	  $(if $(filter 1,$(PERON)),--peron)
 
 clean:
 	rm -rf $(BUILD)
