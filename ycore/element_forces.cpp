@@ -21,7 +21,7 @@ void element_forces(State& s) {
   const double thickness = s.mechanics.thickness_m;
   const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
   const std::int64_t nt = std::int64_t(tri.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nt) > parallel_minimum)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if (std::size_t(nt) > parallel_minimum)
   for (std::int64_t e = 0; e < nt; ++e) {
     const MaterialModel& m = s.materials[tri.material[e]];
     const index_t i = corner_node(index_t(e), 0);

@@ -18,7 +18,7 @@ void joint_forces(State& s, double dt) {
   Joints& jt = s.joints;
   const double thickness = s.mechanics.thickness_m;
   const std::int64_t nj = std::int64_t(jt.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nj) > parallel_minimum)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if (std::size_t(nj) > parallel_minimum)
   for (std::int64_t j = 0; j < nj; ++j) {
     double* f = &jt.force[8 * j];  // x, y of nodes 0..3
     const MaterialModel& m = s.materials[jt.material[j]];
