@@ -159,6 +159,20 @@ TEST_CASE("a non-empty output folder that is not a ydry run is refused without -
   CHECK(ydry_test::read_text(dir.file("out/thesis.tex")) == "precious");
 }
 
+TEST_CASE("ydry check validates a deck without running it and prints the resolved deck", "[deck]") {
+  ydry_test::TempDir dir;
+  ydry_test::write_text(dir.file("deck.toml"), kGoodDeck);
+  const auto good = run_ydry("check " + dir.file("deck.toml") + " --set run.end_time=75.5");
+  CHECK(good.exit_code == 0);
+  CHECK(good.output.find("is valid") != std::string::npos);
+  CHECK(good.output.find("end_time = 75.5") != std::string::npos);  // the override, resolved
+  CHECK(good.output.find("relaxation_tolerance") != std::string::npos);  // a default, written out
+  const auto bad = run_ydry("check " + dir.file("deck.toml") + " --set materials.soil.young=-1");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("materials.soil.young") != std::string::npos);
+  CHECK(run_ydry("check").exit_code == 2);  // no deck
+}
+
 TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
   std::vector<std::filesystem::path> decks;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(YDRY_SOURCE_DIR "/inputs"))

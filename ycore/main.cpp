@@ -1,5 +1,6 @@
 // ydry: 2D FDEM moisture diffusion - shrinkage - fracture for soil desiccation cracking.
 //   ydry DECK.toml [-o OUTDIR] [--set key.path=value ...] [--threads N] [--force] [--quiet]
+//   ydry check DECK.toml [--set key.path=value ...]   (validate, print the resolved deck)
 // Exit codes: 0 done, 2 bad input, 3 numerical failure, 130 interrupted.
 #include <CLI/CLI.hpp>
 
@@ -13,7 +14,11 @@ int main(int argc, char** argv) {
   CLI::App app{"ydry: 2D FDEM simulation of soil desiccation cracking (moisture diffusion, "
                "shrinkage, cohesive fracture)"};
   ydry::RunOptions opt;
-  app.add_option("deck", opt.deck_path, "input deck (TOML)")->required();
+  CLI::App* check = app.add_subcommand("check", "validate a deck and its mesh and print the resolved deck "
+                                                "(every value, defaults included) without running");
+  check->add_option("deck", opt.deck_path, "input deck (TOML)")->required();
+  check->add_option("--set", opt.overrides, "override a deck value: key.path=value (repeatable)");
+  app.add_option("deck", opt.deck_path, "input deck (TOML)");
   app.add_option("-o,--output", opt.outdir, "output folder (default runs/NAME)");
   app.add_option("--set", opt.overrides, "override a deck value: key.path=value (repeatable)");
   app.add_option("--threads", opt.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -25,12 +30,13 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("ydry ") + YDRY_VERSION + " (" + YDRY_COMMIT + ")");
   try {
     app.parse(argc, argv);
+    if (!check->parsed() && opt.deck_path.empty()) throw CLI::RequiredError("deck");
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
   try {
-    return ydry::run(opt);
+    return check->parsed() ? ydry::check(opt) : ydry::run(opt);
   } catch (const ydry::InputError& e) {
     std::cerr << "ydry: error: " << e.what() << "\n";
     return 2;

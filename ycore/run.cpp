@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -147,7 +148,7 @@ void split_across_broken_joints(State& s, const Deck& deck) {
 
 }  // namespace
 
-State setup_state(const Deck& deck) {
+State prepare_state(const Deck& deck) {
   State s = build_state(load_mesh(deck), deck);
   break_joints_along_cracks(s, deck);
   const std::vector<std::uint8_t> has_moisture = triangles_with_moisture(s, deck);
@@ -160,12 +161,30 @@ State setup_state(const Deck& deck) {
   if (deck.mechanics) {
     init_mechanics(s, deck);
     update_shrinkage_strain(s);
-    if (!deck.dynamic) {  // a dynamic run starts at rest in the mesh's geometry
-      relax(s, relaxation_controls(deck), 0.0);  // the initial equilibrium
-      if (commit_joint_damage(s) > 0) split_across_broken_joints(s, deck);
-    }
   }
   return s;
+}
+
+State setup_state(const Deck& deck) {
+  State s = prepare_state(deck);
+  if (deck.mechanics && !deck.dynamic) {  // a dynamic run starts at rest in the mesh's geometry
+    relax(s, relaxation_controls(deck), 0.0);  // the initial equilibrium
+    if (commit_joint_damage(s) > 0) split_across_broken_joints(s, deck);
+  }
+  return s;
+}
+
+int check(const RunOptions& opt) {
+  const Deck deck = load_deck(opt.deck_path, opt.overrides);
+  const State state = prepare_state(deck);
+  std::cout << resolved_deck_text(deck);
+  std::ostringstream line;
+  line << "ydry check: " << deck.path << " is valid: " << state.triangles.size() << " triangles, "
+       << state.joints.size() << " joints, " << state.moisture.size() << " moisture nodes; coupling step "
+       << coupling_step_limit(state, deck) << " s";
+  if (deck.mechanics) line << ", mechanical pseudo-step " << state.mechanics.step_s << " s";
+  std::cerr << line.str() << "\n";
+  return 0;
 }
 
 double coupling_step_limit(const State& s, const Deck& deck) {

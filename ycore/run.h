@@ -25,6 +25,16 @@ struct RunOptions {
 // the deck asks that cannot be done.
 State setup_state(const Deck& deck);
 
+// setup_state without the initial equilibrium: everything that reads and checks the deck
+// and the mesh, and sizes the steps.
+State prepare_state(const Deck& deck);
+
+// `ydry check DECK`: reads the deck (with its --set overrides) and the mesh, checks them as
+// a run would, prints the resolved deck (every value, defaults included) on stdout and a
+// line with the mesh's sizes and steps on stderr, without running. Returns 0; bad input
+// throws InputError like run().
+int check(const RunOptions& options);
+
 // The longest step of the staggered loop: the moisture stability limit, solver.max_coupling_step
 // and the output interval, whichever is smallest.
 double coupling_step_limit(const State& state, const Deck& deck);

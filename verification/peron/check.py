@@ -175,6 +175,10 @@ def check_run(run, outdir, verdicts):
           f"(summary.json right_end_displacement_m {number(s['right_end_displacement_m']) * MM:+.4f} mm at "
           f"t = {s['time_s']:g} s); paper {RIGHT_END_UX * MM:.2f} mm in magnitude")
     verdicts.below("right_end_ux_rel_error", ydry_case.relative_error(abs(ux), RIGHT_END_UX), RIGHT_END_TOLERANCE)
+    x0_last = surface["x0_m"][last]
+    ux_last = surface["ux_m"][last]
+    print(f"# for comparison, the left end (x0 = {x0_last[0] * MM:g} mm): u_x {ux_last[0] * MM:+.4f} mm; "
+          "each end moves about as far as its end block is long (the block shrinks towards its middle)")
 
     time = series["time_s"]
     window = time >= (1.0 - STABLE_WINDOW) * time[-1]
