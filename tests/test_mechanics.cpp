@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -13,6 +14,7 @@
 #include "ycore/input_error.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
+#include "ycore/numerical_failure.h"
 #include "ycore/run.h"
 
 using namespace ydry;
@@ -282,4 +284,19 @@ TEST_CASE("a bar pulled apart over many relaxations dissipates gf_I per unit cra
   const double dissipated = 1.0 * 0.004;  // gf_I x crack area
   CHECK(e.fracture_J == Approx(dissipated).epsilon(0.01));
   CHECK(e.external_work_J == Approx(dissipated).epsilon(0.01));
+}
+
+TEST_CASE("a non-finite position stops the relaxation with a NumericalFailure naming the node", "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(ydry_test::block_deck(dir, "right"));
+  s.nodes.y[4] = std::numeric_limits<double>::quiet_NaN();
+  try {
+    relax(s, RelaxationControls{1e-9, 100}, 1.0);
+    FAIL("relax went on with a NaN position");
+  } catch (const NumericalFailure& failure) {
+    const std::string message = failure.what();
+    CHECK(message.find("node 4 of triangle 1 (material soil") != std::string::npos);
+    CHECK(message.find("non-finite position") != std::string::npos);
+    CHECK(message.find("solver.mechanics_safety") != std::string::npos);
+  }
 }

@@ -8,6 +8,7 @@
 
 #include "version.h"
 #include "ycore/input_error.h"
+#include "ycore/numerical_failure.h"
 #include "ycore/run.h"
 
 int main(int argc, char** argv) {
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
   } catch (const ydry::InputError& e) {
     std::cerr << "ydry: error: " << e.what() << "\n";
     return 2;
+  } catch (const ydry::NumericalFailure& e) {  // in the set-up (after it, run() reports it)
+    std::cerr << "ydry: error: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "ydry: failed: " << e.what() << "\n";
     return 1;

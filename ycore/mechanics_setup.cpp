@@ -222,6 +222,9 @@ void init_mechanics(State& s, const Deck& deck) {
   if (deck.node_mass_scaling) scale_node_masses_to_common_step(s);
   mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
+  const auto [x_min, x_max] = std::minmax_element(s.nodes.x0.begin(), s.nodes.x0.end());
+  const auto [y_min, y_max] = std::minmax_element(s.nodes.y0.begin(), s.nodes.y0.end());
+  mech.mesh_diagonal_m = nn ? std::hypot(*x_max - *x_min, *y_max - *y_min) : 0.0;
 }
 
 std::vector<double> node_stiffness_bound(const State& s) {

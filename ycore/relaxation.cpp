@@ -9,11 +9,14 @@
 // in pseudo-time does not.
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "ycore/blocked_sum.h"
 #include "ycore/contact.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
+#include "ycore/numerical_failure.h"
 
 namespace ydry {
 namespace {
@@ -157,9 +160,31 @@ void predict_equilibrium(State& s, double coupling_dt, double dt) {
   }
 }
 
+// A node that moved farther than the whole mesh is wide since start_motion has run away
+// (an unstable step, an inverted element): the run stops (exit 3) rather than go on with a
+// state that is finite but meaningless.
+void stop_runaway(const State& s) {
+  const Nodes& n = s.nodes;
+  const Mechanics& mech = s.mechanics;
+  const double limit2 = mech.mesh_diagonal_m * mech.mesh_diagonal_m;
+  if (!(limit2 > 0.0)) return;  // a state init_mechanics has not set up (unit tests)
+  for (index_t i = 0; i < n.size(); ++i) {
+    const double dx = n.x[i] - mech.x_start[i], dy = n.y[i] - mech.y_start[i];
+    if (dx * dx + dy * dy <= limit2) continue;
+    const index_t t = triangle_of(i);
+    std::ostringstream m;
+    m << "numerical failure at t = " << s.time_s << " s: node " << i << " of triangle " << t << " (material "
+      << s.material_names[s.triangles.material[t]] << ", initially at x = " << n.x0[i] << " m, y = " << n.y0[i]
+      << " m) moved " << std::sqrt(dx * dx + dy * dy) << " m in one relaxation, more than the mesh is wide ("
+      << mech.mesh_diagonal_m << " m): " << kNumericalFailureCauses;
+    throw NumericalFailure(m.str());
+  }
+}
+
 // Books the reactions, the work of the supports and of gravity since start_motion, and the
 // step count.
 void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
+  stop_runaway(s);
   const Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   update_reactions(s, coupling_dt);
@@ -184,6 +209,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   predict_equilibrium(s, coupling_dt, dt);
   move_driven_nodes(s, coupling_dt, dt);
   ForceMeasures measures = compute_forces(s, dt);
+  if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
   mech.fx_previous = n.fx;
@@ -199,6 +225,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     integrate_nodes(s, damping, dt);
     measures = compute_forces(s, dt);
     ++result.steps;
+    if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
     if (measures.rayleigh_numerator > 0.0 && measures.rayleigh_denominator > 0.0)
       damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / (dt * measures.rayleigh_denominator)), 2.0 / dt);
     result.residual = measures.ratio();
@@ -221,6 +248,7 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   RelaxationResult result;
   // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
   ForceMeasures measures = compute_forces(s, 0.0);
+  if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a dynamic step");
   const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
   const double dt = coupling_dt / double(substeps);
   for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
@@ -228,6 +256,7 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
     integrate_nodes(s, 0.0, dt);
     measures = compute_forces(s, dt);
     ++result.steps;
+    if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
   }
   result.residual = measures.ratio();
   finish_motion(s, result, coupling_dt);

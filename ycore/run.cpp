@@ -18,6 +18,7 @@
 #include "ycore/vtk_output.h"
 #include "ycore/contact.h"
 #include "ycore/mechanics.h"
+#include "ycore/numerical_failure.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
 #include "ycrack/node_sharing.h"
@@ -307,14 +308,24 @@ int run(const RunOptions& opt) {
   write_outputs(false);
   // Rows of the tables every series_interval, frames at the first row at or after each
   // multiple of output_interval.
-  for (long row = 1; state.time_s < deck.end_time_s; ++row) {
-    const double next_output = std::min(deck.end_time_s, row * deck.series_interval_s);
-    while (state.time_s < next_output) {
-      // Advance in chunks so the progress line stays live on long intervals.
-      max_step = advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
-      progress.update(state.time_s, state.moisture_steps);
+  try {
+    for (long row = 1; state.time_s < deck.end_time_s; ++row) {
+      const double next_output = std::min(deck.end_time_s, row * deck.series_interval_s);
+      while (state.time_s < next_output) {
+        // Advance in chunks so the progress line stays live on long intervals.
+        max_step = advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
+        progress.update(state.time_s, state.moisture_steps);
+      }
+      write_outputs(state.time_s >= deck.end_time_s);
     }
-    write_outputs(state.time_s >= deck.end_time_s);
+  } catch (const NumericalFailure& failure) {
+    // The state as it failed, for inspection: a last frame and a row, summary completed = false.
+    progress.finish(state.time_s, state.moisture_steps);
+    log.warning(std::string(failure.what()) + "; the state as it failed is the last frame of " + outdir + "/" +
+                deck.name + ".pvd");
+    next_frame = 0;
+    write_outputs(false);
+    return 3;
   }
   progress.finish(state.time_s, state.moisture_steps);
 

@@ -174,6 +174,8 @@ struct Mechanics {
   double step_s = 0;                      // pseudo-time step of the explicit integration
   double unrelaxed_s = 0;                 // moisture time since the last relaxation
   double roundoff_net2 = 0;               // N^2: |net force|^2 that round-off alone makes
+  double mesh_diagonal_m = 0;             // of the initial bounding box: a node that moves
+                                          // farther in one relaxation has run away
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
   std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap

@@ -1,0 +1,34 @@
+#include "ycore/numerical_failure.h"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace ydry {
+
+void report_non_finite_solid(const State& s, const std::string& what) {
+  const Nodes& n = s.nodes;
+  std::ostringstream m;
+  m << "numerical failure at t = " << s.time_s << " s, " << what << " (" << s.mechanics.steps
+    << " mechanical steps before this relaxation): ";
+  // A position gone wrong spreads to the forces of its neighbours: name it first.
+  const auto first = [&](const std::vector<double>& a, const std::vector<double>& b) {
+    index_t i = 0;
+    while (i < n.size() && std::isfinite(a[i]) && std::isfinite(b[i])) ++i;
+    return i;
+  };
+  const index_t moved = first(n.x, n.y), pushed = first(n.fx, n.fy);
+  const index_t i = moved < n.size() ? moved : pushed;
+  if (i < n.size()) {
+    const index_t t = triangle_of(i);
+    m << "node " << i << " of triangle " << t << " (material " << s.material_names[s.triangles.material[t]]
+      << ", initially at x = " << n.x0[i] << " m, y = " << n.y0[i] << " m) has a non-finite "
+      << (moved < n.size() ? "position" : "force");
+  } else {
+    m << "the out-of-balance force is not finite";
+  }
+  m << ": " << kNumericalFailureCauses;
+  throw NumericalFailure(m.str());
+}
+
+}  // namespace ydry
