@@ -117,6 +117,8 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"mass scaling in a dynamic run", "", "",
        "--set solver.integration=dynamic --set solver.node_mass_scaling=true",
        "solver.node_mass_scaling: needs integration = \"quasi_static\""},
+      {"relaxations rarer than the rows of the tables", "", "", "--set solver.mechanics_interval=60",
+       "solver.mechanics_interval: is longer than run.series_interval"},
   };
   for (const Case& c : cases) {
     ydry_test::TempDir dir;

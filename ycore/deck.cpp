@@ -198,6 +198,9 @@ void read_solver(TableReader r, Deck& d) {
   d.moisture_safety = r.number("moisture_safety", Range{0, 1, true, false}, 0.9);
   d.max_coupling_step_s = r.number("max_coupling_step", kNonNegative, 0.0);
   d.mechanics_interval_s = r.number("mechanics_interval", kNonNegative, 0.0);
+  if (d.mechanics_interval_s > d.series_interval_s)
+    r.error("mechanics_interval", "is longer than run.series_interval: the solid relaxes at every row of the "
+                                  "tables as well, so it would have no effect");
   d.joint_penalty = r.number("joint_penalty", kPositive, 1000.0);
   d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.8);
   d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);

@@ -270,8 +270,7 @@ void scale_node_masses_to_common_step(State& s) {
   if (omega2.empty()) return;
   auto median = omega2.begin() + omega2.size() / 2;
   std::nth_element(omega2.begin(), median, omega2.end());
-  for (std::size_t i = 0; i < bound.size(); ++i)
-    if (bound[i] > 0.0) n.m[i] = bound[i] / *median;
+  for (std::size_t i = 0; i < bound.size(); ++i) n.m[i] = std::max(n.m[i], bound[i] / *median);
 }
 
 }  // namespace ydry
