@@ -28,6 +28,7 @@ const std::vector<std::string> kCrackingLayer = {
     "run.end_time=3000",
     "run.output_interval=1500",
     "run.series_interval=1000",
+    "solver.mechanics_interval=1000",
     "materials.soil.shrinkage_coefficient=0.4",
     "materials.soil.gf_I=0.02",
     "solver.relaxation_tolerance=1e-4",
