@@ -175,6 +175,19 @@ TEST_CASE("ydry check validates a deck without running it and prints the resolve
   CHECK(run_ydry("check").exit_code == 2);  // no deck
 }
 
+TEST_CASE("the resolved deck of a deck with a mesh file is itself a deck that checks the same from elsewhere", "[deck]") {
+  ydry_test::TempDir dir;
+  const auto shipped = run_ydry("check " YDRY_SOURCE_DIR "/inputs/peron/peron.toml");
+  REQUIRE(shipped.exit_code == 0);
+  const ydry::Deck first = ydry::load_deck(YDRY_SOURCE_DIR "/inputs/peron/peron.toml", {});
+  ydry_test::write_text(dir.file("resolved.toml"), ydry::resolved_deck_text(first));
+  const ydry::Deck again = ydry::load_deck(dir.file("resolved.toml"), {});  // its mesh is found from here
+  CHECK(std::filesystem::equivalent(again.mesh_file, first.mesh_file));
+  // The same values: the resolved text differs only in the header's path.
+  const std::string a = ydry::resolved_deck_text(first), b = ydry::resolved_deck_text(again);
+  CHECK(a.substr(a.find('\n')) == b.substr(b.find('\n')));
+}
+
 TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
   std::vector<std::filesystem::path> decks;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(YDRY_SOURCE_DIR "/inputs"))

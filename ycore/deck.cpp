@@ -244,6 +244,11 @@ Deck load_deck(const std::string& path, const std::vector<std::string>& override
 
   if (d.output_interval_s > d.end_time_s)
     TableReader(*root["run"].as_table(), "run", origin).error("output_interval", "is longer than run.end_time");
+  // The resolved deck names the mesh it read by its absolute path, so that it runs as it is
+  // from any folder (an output folder's deck.toml, or `ydry check` > deck.toml).
+  if (!d.mesh_file.empty())
+    root["mesh"].as_table()->insert_or_assign(
+        "file", std::filesystem::absolute(d.mesh_file).lexically_normal().string());
   return d;
 }
 

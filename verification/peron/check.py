@@ -71,8 +71,13 @@ def deck_differences(outdir, deck):
     if not path.is_file():
         return None
     used = flat(tomllib.loads(path.read_text()))
+    shipped = flat(deck)
+    # The resolved deck names the mesh by its absolute path; the shipped one beside the deck.
+    if "mesh.file" in shipped and "mesh.file" in used and \
+            (DECK.parent / shipped["mesh.file"]).resolve() == Path(used["mesh.file"]).resolve():
+        used["mesh.file"] = shipped["mesh.file"]
     return [f"{key} = {json.dumps(used[key]) if key in used else '(missing)'} (deck {json.dumps(value)})"
-            for key, value in flat(deck).items() if used.get(key) != value]
+            for key, value in shipped.items() if used.get(key) != value]
 
 
 def final_cracks(run, t, size):
