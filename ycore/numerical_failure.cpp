@@ -6,6 +6,14 @@
 
 namespace ydry {
 
+std::string describe_node(const State& s, index_t i) {
+  const index_t t = triangle_of(i);
+  std::ostringstream m;
+  m << "node " << i << " of triangle " << t << " (material " << s.material_names[s.triangles.material[t]]
+    << ", initially at x = " << s.nodes.x0[i] << " m, y = " << s.nodes.y0[i] << " m)";
+  return m.str();
+}
+
 void report_non_finite_solid(const State& s, const std::string& what) {
   const Nodes& n = s.nodes;
   std::ostringstream m;
@@ -20,10 +28,7 @@ void report_non_finite_solid(const State& s, const std::string& what) {
   const index_t moved = first(n.x, n.y), pushed = first(n.fx, n.fy);
   const index_t i = moved < n.size() ? moved : pushed;
   if (i < n.size()) {
-    const index_t t = triangle_of(i);
-    m << "node " << i << " of triangle " << t << " (material " << s.material_names[s.triangles.material[t]]
-      << ", initially at x = " << n.x0[i] << " m, y = " << n.y0[i] << " m) has a non-finite "
-      << (moved < n.size() ? "position" : "force");
+    m << describe_node(s, i) << " has a non-finite " << (moved < n.size() ? "position" : "force");
   } else {
     m << "the out-of-balance force is not finite";
   }

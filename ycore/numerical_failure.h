@@ -19,6 +19,9 @@ inline constexpr const char* kNumericalFailureCauses =
     "solver.joint_penalty or contact.penalty), or an element has inverted (a mesh too coarse for "
     "its strains, a material too soft for its load)";
 
+// "node I of triangle T (material M, initially at x = X m, y = Y m)": where a failure is.
+std::string describe_node(const State& state, index_t node);
+
 // Throws NumericalFailure for a solid whose out-of-balance force has turned non-finite,
 // naming the first node with a non-finite position or force (its triangle, material and
 // initial position), the time and the mechanical step, and the likely causes; `what` says

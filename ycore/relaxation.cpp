@@ -171,11 +171,9 @@ void stop_runaway(const State& s) {
   for (index_t i = 0; i < n.size(); ++i) {
     const double dx = n.x[i] - mech.x_start[i], dy = n.y[i] - mech.y_start[i];
     if (dx * dx + dy * dy <= limit2) continue;
-    const index_t t = triangle_of(i);
     std::ostringstream m;
-    m << "numerical failure at t = " << s.time_s << " s: node " << i << " of triangle " << t << " (material "
-      << s.material_names[s.triangles.material[t]] << ", initially at x = " << n.x0[i] << " m, y = " << n.y0[i]
-      << " m) moved " << std::sqrt(dx * dx + dy * dy) << " m in one relaxation, more than the mesh is wide ("
+    m << "numerical failure at t = " << s.time_s << " s: " << describe_node(s, i) << " moved "
+      << std::sqrt(dx * dx + dy * dy) << " m in one relaxation, more than the mesh is wide ("
       << mech.mesh_diagonal_m << " m): " << kNumericalFailureCauses;
     throw NumericalFailure(m.str());
   }
