@@ -68,26 +68,27 @@ def element_size(surface):
 
 # ---- the report's figures ------------------------------------------------------------
 
-def first_crack_time(series):
-    """The first row time with a crack wider than the width threshold, s (None if never)."""
-    rows = np.flatnonzero(series["crack_count"] > 0)
+def first_crack_time(series, count="crack_count"):
+    """The first row time with a crack wider than the width threshold, s (None if never);
+    `count` names the column that counts them (scripts/plot_sweep.py counts one kind)."""
+    rows = np.flatnonzero(series[count] > 0)
     return float(series["time_s"][rows[0]]) if len(rows) else None
 
 
-def width_deviation(series):
+def width_deviation(series, column="mean_surface_crack_width_m"):
     """|mean surface crack width - its value at the last row| / that value, at every row of
     series.csv (the cracks open on the outer surface: those an observer sees widen); NaN at rows
-    without one, and at every row when the last has none."""
-    width = series["mean_surface_crack_width_m"]
+    without one, and at every row when the last has none. `column` names the mean width."""
+    width = series[column]
     final = width[-1] if width[-1] > 0 else math.nan
     return np.abs(width - final) / final
 
 
-def stabilisation_time(series):
-    """The earliest row time from which on the mean surface crack width stays within
-    STABLE_FRACTION of its value at the last row, s; None without surface cracks at the end or
-    when only the last row is within (still changing)."""
-    deviation = width_deviation(series)
+def stabilisation_time(series, column="mean_surface_crack_width_m"):
+    """The earliest row time from which on the mean surface crack width (`column`) stays
+    within STABLE_FRACTION of its value at the last row, s; None without surface cracks at the
+    end or when only the last row is within (still changing)."""
+    deviation = width_deviation(series, column)
     if math.isnan(deviation[-1]):
         return None
     outside = np.flatnonzero(~(deviation <= STABLE_FRACTION))

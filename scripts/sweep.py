@@ -1,0 +1,425 @@
+#!/usr/bin/python3
+"""Run parameter sweeps of ydry, several runs at a time and resumably; write their SLURM job array.
+
+Each entry of a sweep is one run, `ydry DECK -o OUT/NAME_VALUE --force --quiet --set ...`, in its
+own folder. Runs whose summary.json says `completed` (and whose deck.toml is the deck this
+sweep would run now) are skipped, an unfinished one starts again, so the same command resumes
+a sweep after an interruption; entries that resolve to the same deck share one run. Ctrl-C (or
+SIGTERM) stops the ydry processes, waits for them and exits 130. Writes OUT/sweep.json (the
+sweeps and their run folders, read by scripts/plot_sweep.py) and OUT/sweep.slurm (the same runs
+as a SLURM job array: one array task per run).
+
+    scripts/sweep.py inputs/sweeps/young.toml --out runs/sweeps --jobs 2
+    scripts/sweep.py inputs/sweeps/*.toml --out runs/sweeps --jobs 2     # the paper's three sweeps
+    scripts/sweep.py --deck inputs/demo/drying_layer.toml --parameter materials.soil.young \\
+        --values 1e6 4e6 16e6 --out runs/young --jobs 3 --set run.end_time=20000
+    scripts/sweep.py inputs/sweeps/*.toml --out runs/sweeps --slurm-only  # write sweep.slurm only
+    sbatch runs/sweeps/sweep.slurm                 # on a cluster, from the repository root
+
+A sweep file (inputs/sweeps/README.md):
+
+    name = "young"                        # names the runs: OUT/young_1e+06, ...
+    deck = "../peron/peron.toml"          # the base deck, relative to this file
+    parameter = "materials.soil.young"    # the deck value each entry sets to its value (optional)
+    axis = "E"                            # tables and plots: the value times scale, in unit
+    unit = "MPa"
+    scale = 1e-6
+    cracks = "surface"                    # the cracks plot_sweep.py counts: surface | penetrating
+    figures = [25, 26, 27]                # the paper's patterns, width and length figures
+    set = []                              # overrides of every run of the sweep
+    values = [1.0e6, 4.0e6, 16.0e6]       # or, where a value needs overrides of its own:
+    # [[entries]]
+    # value = 0.004
+    # set = ['mesh.file="layer_h4.msh"', "run.end_time=150000"]
+
+Threads: each run gets OMP_NUM_THREADS = --threads, or the cores divided by --jobs (at least
+one). Exit 0 when every run has completed, 1 when some failed, 2 on bad input, 130 when
+interrupted.
+"""
+import json
+import os
+import re
+import shlex
+import signal
+import subprocess
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
+import ydry_case  # noqa: E402  (REPO, script_parser)
+
+REPO = ydry_case.REPO
+CRACK_KINDS = ("surface", "penetrating")
+FILE_KEYS = {"name", "deck", "parameter", "axis", "unit", "scale", "cracks", "figures", "set", "values",
+             "entries"}
+STOP_WAIT_S = 10.0   # after SIGTERM, how long a ydry process may take to end before SIGKILL
+
+
+class SweepError(Exception):
+    """Bad input: the message names the file and key or the run."""
+
+
+def arguments():
+    parser = ydry_case.script_parser(__doc__)
+    parser.add_argument("files", nargs="*", type=Path, help="sweep files (TOML)")
+    parser.add_argument("--deck", type=Path, help="without a sweep file: the base deck")
+    parser.add_argument("--parameter", help="with --deck: the deck value to vary, e.g. materials.soil.young")
+    parser.add_argument("--values", nargs="+", help="with --deck: its values (TOML values)")
+    parser.add_argument("--name", help="with --deck: names the runs (default: the parameter's last key)")
+    parser.add_argument("--out", type=Path, required=True, help="folder of the runs, sweep.json and sweep.slurm")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="an override of every run, after the sweep's own (repeatable)")
+    parser.add_argument("--jobs", type=int, default=1, help="runs at a time (default 1)")
+    parser.add_argument("--threads", type=int, help="OpenMP threads of each run (default: cores // jobs)")
+    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
+    parser.add_argument("--progress-every", type=float, default=30.0, metavar="SECONDS",
+                        help="seconds between progress lines (default 30)")
+    parser.add_argument("--slurm-only", action="store_true", help="write sweep.json and sweep.slurm, run nothing")
+    parser.add_argument("--slurm-cpus", type=int, help="cpus-per-task of sweep.slurm (default: the threads of a run)")
+    parser.add_argument("--slurm-time", default="12:00:00", help="time limit of an array task (default 12:00:00)")
+    args = parser.parse_args()
+    if bool(args.files) == bool(args.deck) or bool(args.deck) != bool(args.parameter and args.values):
+        parser.error("give sweep files, or --deck with --parameter and --values")
+    if args.jobs < 1 or (args.threads is not None and args.threads < 1):
+        parser.error("--jobs and --threads must be at least 1")
+    return args
+
+
+# ---- the sweeps: entries with a value and overrides ------------------------------------
+
+def toml_value(text):
+    """A value given on the command line as TOML (1e6, 0.08, "cross"); a bare word is a string."""
+    try:
+        return tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text
+
+
+def toml_text(value):
+    """A value as --set writes it."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    return json.dumps(value)
+
+
+def value_label(value):
+    """A value as a folder name shows it: 1e+06, 0.004, cross."""
+    text = f"{value:g}" if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value)
+    return re.sub(r"[^A-Za-z0-9.+-]", "_", text)
+
+
+def overrides_list(where, key, value):
+    if not isinstance(value, list) or not all(isinstance(v, str) and "=" in v for v in value):
+        raise SweepError(f"{where}: {key}: a list of overrides \"key.path=value\"")
+    return value
+
+
+def load_sweep_file(path):
+    """A sweep file as {name, deck, parameter, axis, unit, scale, cracks, figures, entries}, each
+    entry {value, overrides}; SweepError naming the file and key on anything wrong."""
+    try:
+        spec = tomllib.loads(path.read_text())
+    except (OSError, tomllib.TOMLDecodeError) as error:
+        raise SweepError(f"{path}: {error}")
+    unknown = sorted(set(spec) - FILE_KEYS)
+    if unknown:
+        raise SweepError(f"{path}: unknown key {unknown[0]} (keys: {', '.join(sorted(FILE_KEYS))})")
+    for key in ("name", "deck", "axis"):
+        if not isinstance(spec.get(key), str):
+            raise SweepError(f"{path}: {key}: a string is required")
+    if ("values" in spec) == ("entries" in spec):
+        raise SweepError(f"{path}: give either values or [[entries]]")
+    if spec.get("cracks", "surface") not in CRACK_KINDS:
+        raise SweepError(f"{path}: cracks: one of {', '.join(CRACK_KINDS)}")
+    common = overrides_list(path, "set", spec.get("set", []))
+    if "values" in spec:
+        entries = [{"value": value, "overrides": []} for value in spec["values"]]
+    else:
+        entries = []
+        for k, entry in enumerate(spec["entries"]):
+            where = f"{path}: entries[{k}]"
+            if set(entry) - {"value", "set"} or "value" not in entry:
+                raise SweepError(f"{where}: an entry has a value and a set of overrides, nothing else")
+            entries.append({"value": entry["value"], "overrides": overrides_list(where, "set", entry.get("set", []))})
+    sweep = described(spec["name"], path.parent / spec["deck"], spec.get("parameter"), entries, common)
+    sweep.update(file=str(path), axis=spec["axis"], unit=spec.get("unit", ""), scale=spec.get("scale", 1.0),
+                 cracks=spec.get("cracks", "surface"), figures=spec.get("figures", []))
+    return sweep
+
+
+def command_line_sweep(args):
+    """The sweep of --deck, --parameter and --values."""
+    name = args.name or args.parameter.split(".")[-1]
+    entries = [{"value": toml_value(text), "overrides": []} for text in args.values]
+    sweep = described(name, args.deck, args.parameter, entries, [])
+    sweep.update(file=None, axis=args.parameter, unit="", scale=1.0, cracks="surface", figures=[])
+    return sweep
+
+
+def described(name, deck, parameter, entries, common):
+    """A sweep's runs: each entry's overrides are parameter=value, the sweep's, then its own."""
+    if not re.fullmatch(r"[A-Za-z0-9_.-]+", name):
+        raise SweepError(f"sweep name {name!r}: letters, digits, _ . - only (it names folders)")
+    for entry in entries:
+        entry["overrides"] = ([f"{parameter}={toml_text(entry['value'])}"] if parameter else []) + common \
+            + entry["overrides"]
+        entry["folder"] = f"{name}_{value_label(entry['value'])}"
+    folders = [entry["folder"] for entry in entries]
+    if len(set(folders)) != len(folders):
+        raise SweepError(f"sweep {name}: two values name the same folder ({', '.join(folders)})")
+    return {"name": name, "deck": str(Path(deck).resolve()), "parameter": parameter, "entries": entries}
+
+
+# ---- runs: the distinct decks, their state, their ydry command -------------------------
+
+def shown(path):
+    """A path as the commands write it: relative to the repository when inside it (the SLURM
+    script then runs from any clone), absolute otherwise."""
+    path = Path(path).resolve()
+    return str(path.relative_to(REPO)) if path.is_relative_to(REPO) else str(path)
+
+
+def deck_lines(text):
+    """A resolved deck without its comments (they name the deck file as it was given)."""
+    return [line for line in text.splitlines() if not line.startswith("#")]
+
+
+def resolved_deck(ydry, deck, overrides):
+    """`ydry check` of the deck with the overrides: the resolved deck's text; SweepError with
+    ydry's message when the deck or an override is wrong."""
+    cmd = [str(ydry), "check", deck] + [arg for o in overrides for arg in ("--set", o)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=REPO)
+    if proc.returncode != 0:
+        raise SweepError(f"{shlex.join(cmd)}:\n{proc.stderr.strip()}")
+    return proc.stdout
+
+
+def plan_runs(sweeps, out, ydry, extra):
+    """The distinct runs of the sweeps, each {folder, path, deck, overrides, resolved, end_time},
+    and the entries that share one: an entry whose resolved deck is an earlier entry's shares
+    that run (its folder becomes the run's), listed as (its own folder name, the run's)."""
+    runs, by_deck, shared = [], {}, []
+    for sweep in sweeps:
+        for entry in sweep["entries"]:
+            entry["overrides"] += extra
+            resolved = resolved_deck(ydry, shown(sweep["deck"]), entry["overrides"])
+            key = "\n".join(deck_lines(resolved))
+            if key in by_deck:
+                shared.append((entry["folder"], by_deck[key]["folder"]))
+                entry["folder"] = by_deck[key]["folder"]
+                continue
+            run = {"folder": entry["folder"], "path": out / entry["folder"], "deck": shown(sweep["deck"]),
+                   "overrides": entry["overrides"], "resolved": resolved,
+                   "end_time": float(tomllib.loads(resolved)["run"]["end_time"])}
+            by_deck[key] = run
+            runs.append(run)
+    return runs, shared
+
+
+def run_state(run):
+    """completed | changed (completed, but with another deck) | unfinished | new."""
+    summary, deck = run["path"] / "summary.json", run["path"] / "deck.toml"
+    if not summary.is_file():
+        return "unfinished" if run["path"].exists() else "new"
+    try:
+        completed = json.loads(summary.read_text()).get("completed") is True
+    except json.JSONDecodeError:
+        return "unfinished"
+    if not completed:
+        return "unfinished"
+    same = deck.is_file() and deck_lines(deck.read_text()) == deck_lines(run["resolved"])
+    return "completed" if same else "changed"
+
+
+def resume_arguments(folder):
+    """How ydry takes up a run whose folder holds an unfinished run (or nothing yet): the
+    arguments besides the deck, -o and the overrides. ydry has no restart from a checkpoint, so
+    the run starts again from t = 0 and --force lets it replace what the folder holds. The
+    local runner and the SLURM script both take this choice, and it is the one place to change
+    when runs can restart from their newest checkpoint."""
+    return ["--force"]
+
+
+def ydry_arguments(ydry, run):
+    """The ydry command of a run, the same locally and in the SLURM script (which runs from the
+    repository root)."""
+    sets = [arg for override in run["overrides"] for arg in ("--set", override)]
+    return [shown(ydry), run["deck"], "-o", shown(run["path"]), *resume_arguments(run["path"]), "--quiet", *sets]
+
+
+# ---- the files of a sweep --------------------------------------------------------------
+
+def write_manifest(out, sweeps):
+    """OUT/sweep.json: the sweeps (with their run folders, relative to OUT), merged with those
+    of earlier commands into the same OUT (a sweep of the same name is replaced)."""
+    path = out / "sweep.json"
+    earlier = json.loads(path.read_text())["sweeps"] if path.is_file() else []
+    names = {sweep["name"] for sweep in sweeps}
+    kept = [sweep for sweep in earlier if sweep["name"] not in names]
+    path.write_text(json.dumps({"sweeps": kept + sweeps}, indent=1) + "\n")
+    return path
+
+
+def write_slurm(out, runs, ydry, cpus, time_limit):
+    """OUT/sweep.slurm: a SLURM job array, one task per run, each the local runner's ydry command
+    (paths relative to the repository root: submit from it), skipped when completed."""
+    cases = "\n".join(f"  {k}) out={shlex.quote(shown(run['path']))}\n     args=({shlex.join(ydry_arguments(ydry, run))}) ;;"
+                      for k, run in enumerate(runs))
+    text = f"""#!/bin/bash
+# ydry sweep of {len(runs)} runs into {shown(out)}, written by scripts/sweep.py: one array task per
+# run. Submit from the repository root (the paths are relative to it), after building ydry:
+#   sbatch {shown(out)}/sweep.slurm
+# A task whose run already completed (summary.json) does nothing. Test one task without SLURM:
+#   SLURM_ARRAY_TASK_ID=0 bash {shown(out)}/sweep.slurm
+#SBATCH --job-name=ydry-sweep
+#SBATCH --array=0-{len(runs) - 1}
+#SBATCH --cpus-per-task={cpus}
+#SBATCH --time={time_limit}
+#SBATCH --output={shown(out)}/slurm-%A_%a.out
+set -euo pipefail
+cd "${{SLURM_SUBMIT_DIR:-.}}"
+export OMP_NUM_THREADS="${{SLURM_CPUS_PER_TASK:-{cpus}}}"
+case "${{SLURM_ARRAY_TASK_ID:?the array task index, 0-{len(runs) - 1}}}" in
+{cases}
+  *) echo "sweep.slurm: no run ${{SLURM_ARRAY_TASK_ID}} (0-{len(runs) - 1})" >&2; exit 2 ;;
+esac
+if grep -qs '"completed": true' "$out/summary.json"; then
+  echo "$out: completed earlier, skipped"
+  exit 0
+fi
+exec "${{args[@]}}"
+"""
+    path = out / "sweep.slurm"
+    path.write_text(text)
+    path.chmod(0o755)
+    return path
+
+
+# ---- running -----------------------------------------------------------------------------
+
+def simulated_time(folder):
+    """The time of the last row of the run's series.csv, s (0 before its first row)."""
+    try:
+        with open(folder / "series.csv", "rb") as f:
+            f.seek(max(0, f.seek(0, os.SEEK_END) - 4096))
+            return float(f.read().decode().strip().splitlines()[-1].split(",")[0])
+    except (OSError, ValueError, IndexError):
+        return 0.0
+
+
+def clock(seconds):
+    return time.strftime("%H:%M:%S", time.gmtime(seconds))
+
+
+def progress_line(done, running, left, start):
+    shown_runs = "; ".join(f"{run['folder']} {simulated_time(run['path']):,.0f}/{run['end_time']:,.0f} s"
+                           for run in running)
+    return (f"sweep {clock(time.monotonic() - start)}: {len(done)} done, {len(running)} running"
+            f"{' (' + shown_runs + ')' if running else ''}, {len(left)} left")
+
+
+def stop(running):
+    """SIGTERM to every running ydry, SIGKILL to any still there after STOP_WAIT_S; waits for all."""
+    for run in running:
+        run["process"].terminate()
+    deadline = time.monotonic() + STOP_WAIT_S
+    for run in running:
+        try:
+            run["process"].wait(max(0.0, deadline - time.monotonic()))
+        except subprocess.TimeoutExpired:
+            run["process"].kill()
+            run["process"].wait()
+
+
+def finished(run, logs):
+    """One line on a run that has just ended; failed runs also show the end of their stderr."""
+    rc = run["process"].returncode
+    wall = time.monotonic() - run["started"]
+    if rc == 0:
+        return f"done    {run['folder']} in {wall:.0f} s"
+    tail = (logs / f"{run['folder']}.txt").read_text().strip().splitlines()[-5:]
+    return f"FAILED  {run['folder']} (ydry exit {rc}) after {wall:.0f} s:\n  " + "\n  ".join(tail)
+
+
+def run_all(todo, ydry, out, jobs, threads, every):
+    """Runs todo, `jobs` at a time, printing progress; returns the runs that failed. Ctrl-C or
+    SIGTERM stops the running ones and raises KeyboardInterrupt."""
+    logs = out / "logs"
+    logs.mkdir(exist_ok=True)
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    left, running, done, failed = list(todo), [], [], []
+    start = last_line = time.monotonic()
+    try:
+        while left or running:
+            while left and len(running) < jobs:
+                run = left.pop(0)
+                with open(logs / f"{run['folder']}.txt", "w") as log:
+                    run["process"] = subprocess.Popen(ydry_arguments(ydry, run), cwd=REPO, env=env, stdin=subprocess.DEVNULL,
+                                                      stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+                run["started"] = time.monotonic()
+                running.append(run)
+                print(f"start   {run['folder']}", flush=True)
+            time.sleep(0.2)
+            for run in [r for r in running if r["process"].poll() is not None]:
+                running.remove(run)
+                (done if run["process"].returncode == 0 else failed).append(run)
+                print(finished(run, logs), flush=True)
+            if time.monotonic() - last_line >= every:
+                print(progress_line(done, running, left, start), flush=True)
+                last_line = time.monotonic()
+    except KeyboardInterrupt:
+        print(f"sweep: interrupted; stopping {len(running)} running ydry", flush=True)
+        stop(running)
+        raise
+    return failed
+
+
+def interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+
+def main():
+    args = arguments()
+    out = args.out.resolve()
+    try:
+        sweeps = [load_sweep_file(path) for path in args.files] if args.files else [command_line_sweep(args)]
+        runs, shared = plan_runs(sweeps, out, args.ydry.resolve(), args.set)
+    except SweepError as error:
+        print(f"sweep: error: {error}", file=sys.stderr)
+        return 2
+    out.mkdir(parents=True, exist_ok=True)
+    threads = args.threads or max(1, len(os.sched_getaffinity(0)) // args.jobs)
+    write_manifest(out, sweeps)
+    slurm = write_slurm(out, runs, args.ydry.resolve(), args.slurm_cpus or threads, args.slurm_time)
+    states = {run["folder"]: run_state(run) for run in runs}
+    todo = [run for run in runs if states[run["folder"]] != "completed"]
+    entries = sum(len(sweep["entries"]) for sweep in sweeps)
+    print(f"sweep: {len(runs)} runs for {entries} values into {shown(out)} ({slurm.name} written); "
+          f"{len(runs) - len(todo)} completed earlier, {len(todo)} to run, {args.jobs} at a time, "
+          f"{threads} thread(s) each")
+    for run in runs:
+        note = {"completed": "skipped (completed)", "changed": "completed with another deck: run again",
+                "unfinished": "unfinished: run again", "new": "to run"}[states[run["folder"]]]
+        print(f"  {run['folder']}: {note}")
+    for entry, run in shared:
+        print(f"  {entry}: the deck of {run}, shares its run")
+    if args.slurm_only:
+        return 0
+    for signum in (signal.SIGINT, signal.SIGTERM):  # SIGINT too where a shell started sweep.py ignoring it
+        signal.signal(signum, interrupt)
+    try:
+        failed = run_all(todo, args.ydry.resolve(), out, args.jobs, threads, args.progress_every)
+    except KeyboardInterrupt:
+        print("sweep: stopped; run the same command again to resume")
+        return 130
+    print(f"sweep: {len(runs) - len(failed)} of {len(runs)} runs completed"
+          + (f"; failed: {', '.join(run['folder'] for run in failed)} (logs in {shown(out / 'logs')})" if failed else ""))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
