@@ -299,10 +299,7 @@ def main():
             skipped.append("Fig. 22 (no surface.csv in the run: see its log.txt)")
         else:
             figures.append(fig_surface(run, out / "fig22_surface_displacement.png"))
-        size = run_report.element_size(run["surface"])
-        if not math.isfinite(size):  # no surface.csv: a hundredth of the solid's length
-            size = 0.005 * np.ptp(ydry_case.last_frame(args.run)["x0"][:, 0])
-        tracks = run_report.track_cracks(run["cracks"], 2.0 * size)
+        tracks = run_report.crack_tracks(run, args.run)
         figures.append(fig_tracks(run, tracks, out / "fig23_crack_width.png", "width", 23))
         figures.append(fig_tracks(run, tracks, out / "fig24_crack_length.png", "length", 24))
     text = report(run, args.run, figures, skipped)

@@ -7,9 +7,10 @@ writes into --out (default OUT/plots), per sweep NAME:
     NAME_patterns.png   the final crack patterns, one run above the other (Figs. 25, 28, 31)
     NAME_width.png      the mean crack width against time, one curve per value (Figs. 26, 29, 32)
     NAME_length.png     the mean crack length against time (Figs. 27, 30, 33)
-    NAME_table.csv      per value: crack count, first-crack time, stabilisation time, mean and
-    NAME_table.md       total final width, mean final length (CSV in s and m; Markdown in min
-                        and mm, with the definitions and each quantity's trend with the value)
+    NAME_table.csv      per value: crack count, first-crack time, mean initiation time of the
+    NAME_table.md       final cracks, stabilisation time, mean and total final width, mean final
+                        length (CSV in s and m; Markdown in min and mm, with the definitions and
+                        each quantity's trend with the value)
 
 The cracks counted are the sweep's `cracks`: `surface` (mouth on the outer surface, as seen
 from above: the Peron sweeps) or `penetrating` (surface cracks that also reach the bottom of
@@ -38,6 +39,7 @@ KIND_TEXT = {"surface": "surface cracks (mouth on the outer surface)",
 QUANTITIES = [  # table column (SI), Markdown heading, factor to its unit
     ("crack_count", "cracks", 1.0),
     ("first_crack_s", "first crack (min)", 1.0 / MINUTE),
+    ("mean_initiation_s", "mean initiation (min)", 1.0 / MINUTE),
     ("stabilisation_s", "stable from (min)", 1.0 / MINUTE),
     ("mean_width_m", "mean final width (mm)", MM),
     ("total_width_m", "total final width (mm)", MM),
@@ -58,14 +60,18 @@ def arguments():
 
 # ---- the cracks of one kind, per row of series.csv -----------------------------------------
 
+def counted(cracks, kind):
+    """The rows of cracks.csv (a mask) of the cracks of `kind` (surface | penetrating)."""
+    keep = cracks["surface"] == 1
+    return keep & (cracks["penetrating"] == 1) if kind == "penetrating" else keep
+
+
 def crack_history(run, kind):
     """The cracks of `kind` at every row time of series.csv: {time_s, count, mean_width_m,
     total_width_m, mean_length_m} (means NaN at rows without one), from cracks.csv."""
     times = run["series"]["time_s"]
     cracks = run["cracks"]
-    keep = cracks["surface"] == 1
-    if kind == "penetrating":
-        keep &= cracks["penetrating"] == 1
+    keep = counted(cracks, kind)
     row = np.searchsorted(times, cracks["time_s"][keep])
     count = np.bincount(row, minlength=len(times))
     total = np.bincount(row, weights=cracks["width_m"][keep], minlength=len(times))
@@ -76,11 +82,22 @@ def crack_history(run, kind):
                 "mean_length_m": np.where(count > 0, length / count, math.nan)}
 
 
-def run_figures(history):
+def mean_initiation_time(run, folder, kind):
+    """The mean over the cracks of `kind` open at the last row of the time each first appeared,
+    s (None without any): cracks.csv's rows followed through time (run_report.crack_tracks). The
+    paper's thickness study speaks of this mean, not of the first crack."""
+    end = run["series"]["time_s"][-1]
+    starts = [track["time"][0] for track in run_report.crack_tracks(run, folder, counted(run["cracks"], kind))
+              if track["time"][-1] == end]
+    return float(np.mean(starts)) if starts else None
+
+
+def run_figures(run, folder, kind, history):
     """The table's figures of one run from its crack history."""
     last = {key: float(history[key][-1]) for key in ("mean_width_m", "total_width_m", "mean_length_m")}
     return {"crack_count": int(history["count"][-1]),
             "first_crack_s": run_report.first_crack_time(history, "count"),
+            "mean_initiation_s": mean_initiation_time(run, folder, kind),
             "stabilisation_s": run_report.stabilisation_time(history, "mean_width_m"), **last}
 
 
@@ -95,7 +112,7 @@ def load_sweep(out, sweep):
             run = run_report.load_run(folder, "plot_sweep")
             history = crack_history(run, sweep["cracks"])
             done = run["summary"]["completed"]
-            row.update(run=run, history=history, figures=run_figures(history), path=folder,
+            row.update(run=run, history=history, figures=run_figures(run, folder, sweep["cracks"], history), path=folder,
                        status="completed" if done else f"unfinished, at {run['summary']['time_s']:g} s")
         rows.append(row)
     return rows
@@ -130,9 +147,7 @@ def fig_patterns(sweep, rows, path, warp):
                                     vmin=np.nanmin(w), vmax=np.nanmax(w))
         plot_run.draw_cracks(ax, lines)
         cracks, end = row["run"]["cracks"], row["history"]["time_s"][-1]
-        at_end = (cracks["time_s"] == end) & (cracks["surface"] == 1)
-        if sweep["cracks"] == "penetrating":
-            at_end &= cracks["penetrating"] == 1
+        at_end = (cracks["time_s"] == end) & counted(cracks, sweep["cracks"])
         top = solid["shown"][:, 1].max() * MM
         ax.plot(cracks["x_m"][at_end] * MM, np.full(np.count_nonzero(at_end), top), "rv", ms=6, clip_on=False)
         note = "" if row["status"] == "completed" else f" ({row['status']})"
@@ -175,15 +190,28 @@ def fig_evolution(sweep, rows, path, key, text, index):
 
 def trend(rows, key):
     """How a figure changes as the value grows: rises, falls (each "with ties" where two values
-    give the same), no change, mixed, or n/a when a run or the figure is missing."""
-    pairs = sorted((row["value"], row["figures"][key]) for row in rows if row["run"] is not None)
-    values = [v for _, v in pairs]
-    if len(pairs) < len(rows) or len(values) < 2 or any(v is None or not math.isfinite(v) for v in values):
+    give the same), no change, mixed, or n/a when a run is not completed or the figure missing."""
+    if any(row["status"] != "completed" for row in rows) or len(rows) < 2:
+        return "n/a"
+    values = [v for _, v in sorted((row["value"], row["figures"][key]) for row in rows)]
+    if any(v is None or not math.isfinite(v) for v in values):
         return "n/a"
     steps = np.sign(np.diff(values))
     ties = " with ties" if (steps == 0).any() else ""
     return ("no change" if (steps == 0).all() else "rises" + ties if (steps >= 0).all() else
             "falls" + ties if (steps <= 0).all() else "mixed")
+
+
+def cell(row, key, factor):
+    """A figure of the Markdown table in its unit; `never` for a time that never came (no
+    crack), `not reached` for a width that is not stable, `-` for a run not made or a mean
+    without cracks."""
+    value = None if row["run"] is None else row["figures"][key]
+    if row["run"] is not None and value is None:
+        return "not reached" if key == "stabilisation_s" else "never"
+    if value is None or not math.isfinite(value):
+        return "-"
+    return f"{value:d}" if key == "crack_count" else f"{value * factor:.4g}"
 
 
 def write_tables(sweep, rows, out):
@@ -201,12 +229,7 @@ def write_tables(sweep, rows, out):
              f"| {sweep['axis']}{unit} | run | " + " | ".join(head for _, head, _ in QUANTITIES) + " |",
              "|---" * (len(QUANTITIES) + 2) + "|"]
     for row in rows:
-        figures = row.get("figures", {})
-        cells = ["never" if row["run"] is not None and figures[key] is None and key == "first_crack_s" else
-                 "not reached" if row["run"] is not None and figures[key] is None else
-                 "-" if row["run"] is None or not math.isfinite(figures[key]) else
-                 f"{figures[key]:d}" if key == "crack_count" else f"{figures[key] * factor:.4g}"
-                 for key, _, factor in QUANTITIES]
+        cells = [cell(row, key, factor) for key, _, factor in QUANTITIES]
         shown = f"{row['value'] * sweep['scale']:g}" if isinstance(row["value"], (int, float)) else row["value"]
         note = "" if row["status"] == "completed" else f" ({row['status']})"
         lines.append(f"| {shown} | {row['folder']}{note} | " + " | ".join(cells) + " |")
@@ -214,7 +237,9 @@ def write_tables(sweep, rows, out):
                                                            for key, head, _ in QUANTITIES) + ".", "",
               "Definitions: the cracks counted are the rows of cracks.csv with `surface` 1"
               + (" and `penetrating` 1" if sweep["cracks"] == "penetrating" else "")
-              + "; final: the last row; first crack: the first row time with one; stable from: the earliest "
+              + "; final: the last row; first crack: the first row time with one; mean initiation: the mean "
+              "over the final cracks of the row time each first appeared (cracks followed by their mouth x, "
+              "matched within two surface elements); stable from: the earliest "
               f"row time from which on their mean width stays within {100 * run_report.STABLE_FRACTION:g} % "
               "of its final value (not reached: only the last row is); widths are mouth openings, lengths "
               "the summed lengths of a crack's broken joints."]

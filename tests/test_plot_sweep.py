@@ -9,7 +9,9 @@ run's files give when read here with the csv module: the crack count, mean and t
 the last row (for surface cracks, series.csv's surface columns; for penetrating ones, the rows
 of cracks.csv with penetrating and surface 1), their mean length (cracks.csv), the first row
 time with one, and the earliest row time from which their mean width stays within 2 % of its
-last value. The strip must have penetrating cracks (else the test would not test them).
+last value; and, where the run's final cracks all opened in its first cracked row, their mean
+initiation time is that row's. The strip must have penetrating cracks and such a run (else
+the test would not test them).
 plot_sweep.py on a folder without sweep.json must exit 2. Exits 1 on any failure.
 """
 import argparse
@@ -64,9 +66,13 @@ def expected(folder, kind):
         if all(abs(m - mean[-1]) <= 0.02 * mean[-1] for m in mean[k:]):
             stable = times[k]
             break
-    return {"crack_count": count[-1], "first_crack_s": next((t for t, c in zip(times, count) if c), None),
-            "stabilisation_s": stable, "mean_width_m": mean[-1], "total_width_m": total,
-            "mean_length_m": sum(length for _, length in final) / len(final) if final else math.nan}
+    first = next((t for t, c in zip(times, count) if c), None)
+    figures = {"crack_count": count[-1], "first_crack_s": first, "stabilisation_s": stable, "mean_width_m": mean[-1],
+               "total_width_m": total,
+               "mean_length_m": sum(length for _, length in final) / len(final) if final else math.nan}
+    if first is not None and all(c == count[-1] for c in count[times.index(first):]):
+        figures["mean_initiation_s"] = first  # all the final cracks were there at the first
+    return figures
 
 
 def differs(table, value):
@@ -107,18 +113,21 @@ def main():
         folders = [[entry["folder"] for entry in sweep["entries"]] for sweep in manifest]
         if folders[0] != folders[1]:
             failures.append(f"the two sweeps do not share their runs: {folders}")
-        penetrating = 0
+        penetrating = initiations = 0
         for kind in KINDS:
             table = rows(plots / f"{kind}_table.csv") if (plots / f"{kind}_table.csv").is_file() else []
             for row in table:
                 want = expected(out / row["folder"], kind)
                 penetrating += want["crack_count"] if kind == "penetrating" else 0
+                initiations += "mean_initiation_s" in want
                 failures += [f"{kind} {row['folder']} {key}: table {row[key]!r}, files {value!r}"
                              for key, value in want.items() if differs(row[key], value)]
             if len(table) != len(VALUES):
                 failures.append(f"{kind}_table.csv has {len(table)} rows, not {len(VALUES)}")
         if penetrating == 0:
             failures.append("no penetrating crack in the strip runs: the test data no longer tests them")
+        if initiations == 0:
+            failures.append("no run whose cracks all open at once: the mean initiation time went untested")
 
         proc = subprocess.run([sys.executable, str(REPO / "scripts" / "plot_sweep.py"), tmp], capture_output=True,
                               text=True)

@@ -58,6 +58,17 @@ def track_cracks(cracks, match_m):
              "length": cracks["length_m"][rows]} for rows in sorted(tracks, key=lambda rows: x[rows[-1]])]
 
 
+def crack_tracks(run, folder, rows=None):
+    """track_cracks of the run's cracks.csv, or of its `rows` (a mask) when given, matching
+    within two element sizes of the top surface; without surface.csv, within a hundredth of
+    the solid's length (its last frame in `folder`)."""
+    size = element_size(run["surface"])
+    if not math.isfinite(size):
+        size = 0.005 * np.ptp(ydry_case.last_frame(folder)["x0"][:, 0])
+    cracks = run["cracks"] if rows is None else {key: column[rows] for key, column in run["cracks"].items()}
+    return track_cracks(cracks, 2.0 * size)
+
+
 def element_size(surface):
     """The median spacing of the surface points at the first frame, m (NaN without them)."""
     if surface is None or not len(surface["time_s"]):
