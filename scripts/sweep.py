@@ -36,6 +36,7 @@ Threads: each run gets OMP_NUM_THREADS = --threads, or the cores divided by --jo
 one). Exit 0 when every run has completed, 1 when some failed, 2 on bad input, 130 when
 interrupted.
 """
+import hashlib
 import json
 import os
 import re
@@ -183,9 +184,24 @@ def shown(path):
     return str(path.relative_to(REPO)) if path.is_relative_to(REPO) else str(path)
 
 
-def deck_lines(text):
-    """A resolved deck without its comments (they name the deck file as it was given)."""
-    return [line for line in text.splitlines() if not line.startswith("#")]
+def numbers_as_floats(value):
+    """A parsed deck with its integers as floats: 600000 and 600000.0 are one end time."""
+    if isinstance(value, dict):
+        return {key: numbers_as_floats(item) for key, item in value.items()}
+    if isinstance(value, list):
+        return [numbers_as_floats(item) for item in value]
+    return float(value) if isinstance(value, int) and not isinstance(value, bool) else value
+
+
+def deck_key(text):
+    """A resolved deck (ydry check, a run's deck.toml) as a comparable string: its values, not
+    its comments or number formatting, and the mesh file by its contents where it exists here
+    (the resolved deck names it by an absolute path: a run copied from a cluster keeps it)."""
+    deck = numbers_as_floats(tomllib.loads(text))
+    mesh = Path(deck.get("mesh", {}).get("file", ""))
+    if mesh.is_file():
+        deck["mesh"]["file"] = hashlib.sha256(mesh.read_bytes()).hexdigest()
+    return json.dumps(deck, sort_keys=True)
 
 
 def resolved_deck(ydry, deck, overrides):
@@ -199,7 +215,7 @@ def resolved_deck(ydry, deck, overrides):
 
 
 def plan_runs(sweeps, out, ydry, extra):
-    """The distinct runs of the sweeps, each {folder, path, deck, overrides, resolved, end_time},
+    """The distinct runs of the sweeps, each {folder, path, deck, overrides, deck_key, end_time},
     and the entries that share one: an entry whose resolved deck is an earlier entry's shares
     that run (its folder becomes the run's), listed as (its own folder name, the run's)."""
     runs, by_deck, shared = [], {}, []
@@ -207,13 +223,13 @@ def plan_runs(sweeps, out, ydry, extra):
         for entry in sweep["entries"]:
             entry["overrides"] += extra
             resolved = resolved_deck(ydry, shown(sweep["deck"]), entry["overrides"])
-            key = "\n".join(deck_lines(resolved))
+            key = deck_key(resolved)
             if key in by_deck:
                 shared.append((entry["folder"], by_deck[key]["folder"]))
                 entry["folder"] = by_deck[key]["folder"]
                 continue
             run = {"folder": entry["folder"], "path": out / entry["folder"], "deck": shown(sweep["deck"]),
-                   "overrides": entry["overrides"], "resolved": resolved,
+                   "overrides": entry["overrides"], "deck_key": key,
                    "end_time": float(tomllib.loads(resolved)["run"]["end_time"])}
             by_deck[key] = run
             runs.append(run)
@@ -231,7 +247,7 @@ def run_state(run):
         return "unfinished"
     if not completed:
         return "unfinished"
-    same = deck.is_file() and deck_lines(deck.read_text()) == deck_lines(run["resolved"])
+    same = deck.is_file() and deck_key(deck.read_text()) == run["deck_key"]
     return "completed" if same else "changed"
 
 
