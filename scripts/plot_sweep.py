@@ -17,7 +17,7 @@ from above: the Peron sweeps) or `penetrating` (surface cracks that also reach t
 the layer), from cracks.csv. Runs not yet completed are shown as far as they went, and marked.
 
     scripts/plot_sweep.py runs/sweeps
-    scripts/plot_sweep.py runs/sweeps --out figures --sweep thickness --warp 5
+    scripts/plot_sweep.py runs/sweeps --out figures --sweep thickness --warp 3
 """
 import csv
 import json
@@ -53,8 +53,8 @@ def arguments():
     parser.add_argument("--out", type=Path, help="folder of the figures and tables (default SWEEP/plots)")
     parser.add_argument("--sweep", dest="names", action="append", metavar="NAME",
                         help="only this sweep (repeatable; default all in sweep.json)")
-    parser.add_argument("--warp", type=float, default=10.0,
-                        help="displacement magnification of the crack patterns (default 10)")
+    parser.add_argument("--warp", type=float, default=1.0,
+                        help="displacement magnification of the crack patterns (default 1: the true shape)")
     return parser.parse_args()
 
 
@@ -137,7 +137,8 @@ def fig_patterns(sweep, rows, path, warp):
     shown = [row for row in rows if row["run"] is not None]
     data = [plot_run.frame_data(ydry_case.last_frame_files(row["path"]), warp) for row in shown]
     heights = [np.ptp(solid["x0"][:, 1]) for solid, _ in data]
-    width = max(np.ptp(solid["x0"][:, 0]) for solid, _ in data)
+    left = min(solid["x0"][:, 0].min() for solid, _ in data)
+    width = max(solid["x0"][:, 0].max() for solid, _ in data) - left
     w = np.concatenate([solid["point_data"]["moisture"] for solid, _ in data])
     fig, axes = plt.subplots(len(data), 1, figsize=(12, 1.2 + sum(0.9 + 10 * h / width for h in heights)),
                              gridspec_kw={"height_ratios": [0.09 * width + h for h in heights]},
@@ -153,7 +154,7 @@ def fig_patterns(sweep, rows, path, warp):
         note = "" if row["status"] == "completed" else f" ({row['status']})"
         ax.set_title(f"{value_text(sweep, row['value'])}: {np.count_nonzero(at_end)} {sweep['cracks']} cracks "
                      f"(red marks), t = {end / MINUTE:.0f} min{note}", fontsize=10, loc="left")
-        ax.set_xlim(-0.02 * width * MM, 1.02 * width * MM)
+        ax.set_xlim((left - 0.01 * width) * MM, (left + 1.01 * width) * MM)
         ax.set_ylabel("y (mm)")
     axes[-1, 0].set_xlabel("x (mm)")
     fig.suptitle(figure_title(sweep, 0, f"Final crack patterns for different {sweep['axis']}: moisture, broken "

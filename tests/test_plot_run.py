@@ -7,7 +7,6 @@ then plot_run.py on it: every figure and report.md must be written, and the repo
 count must be summary.json's. plot_run.py on a folder that is not a ydry run must exit
 non-zero and say so. Exits 1 on any failure.
 """
-import argparse
 import json
 import re
 import subprocess
@@ -32,9 +31,7 @@ def plot_run(*args):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
-    args = parser.parse_args()
+    args = ydry_case.test_arguments(__doc__)
     failures = []
     with tempfile.TemporaryDirectory(prefix="ydry_plot_run_") as tmp:
         run, out = Path(tmp) / "run", Path(tmp) / "plots"
@@ -59,9 +56,7 @@ def main():
         if proc.returncode == 0 or "is not a ydry run folder" not in proc.stderr:
             failures.append(f"plot_run.py on a folder that is not a run: exit {proc.returncode}, "
                             f"{proc.stderr!r}")
-    for failure in failures:
-        print(f"FAIL: {failure}")
-    return 1 if failures else 0
+    return ydry_case.failed(failures)
 
 
 if __name__ == "__main__":

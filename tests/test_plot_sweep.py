@@ -14,7 +14,6 @@ initiation time is that row's. The strip must have penetrating cracks and such a
 the test would not test them).
 plot_sweep.py on a folder without sweep.json must exit 2. Exits 1 on any failure.
 """
-import argparse
 import csv
 import json
 import math
@@ -24,6 +23,9 @@ import tempfile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "verification"))
+import ydry_case  # noqa: E402  (test_arguments, failed)
+
 VALUES = [0.2, 0.3]
 KINDS = ("surface", "penetrating")
 FILES = ["table.csv", "table.md", "patterns.png", "width.png", "length.png"]
@@ -87,9 +89,7 @@ def differs(table, value):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
-    args = parser.parse_args()
+    args = ydry_case.test_arguments(__doc__)
     failures = []
     with tempfile.TemporaryDirectory(prefix="ydry_plot_sweep_") as tmp:
         out, plots = Path(tmp) / "out", Path(tmp) / "plots"
@@ -133,9 +133,7 @@ def main():
                               text=True)
         if proc.returncode != 2 or "holds no sweep.json" not in proc.stderr:
             failures.append(f"plot_sweep.py on a folder without sweep.json: exit {proc.returncode}, {proc.stderr!r}")
-    for failure in failures:
-        print(f"FAIL: {failure}")
-    return 1 if failures else 0
+    return ydry_case.failed(failures)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,6 @@ seconds of CPU each), one run at a time:
    it makes run 1 again (end time 2000 s) and touches no other run.
 Exits 1 on any failure.
 """
-import argparse
 import json
 import os
 import shutil
@@ -24,6 +23,9 @@ import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "verification"))
+import ydry_case  # noqa: E402  (test_arguments, failed)
+
 END_TIMES = [1000, 2000, 20000]
 SWEEP_FILE = f"""name = "strip"
 deck = "{REPO}/tests/data/sweep_strip.toml"
@@ -67,9 +69,7 @@ def last_row_time(folder):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
-    args = parser.parse_args()
+    args = ydry_case.test_arguments(__doc__)
     failures = []
     with tempfile.TemporaryDirectory(prefix="ydry_sweep_") as tmp:
         sweep_file, out = Path(tmp) / "strip.toml", Path(tmp) / "out"
@@ -124,9 +124,7 @@ def main():
             failures.append(f"the SLURM task's run ended at {task.get('time_s')} s, completed {task.get('completed')}")
         if [(run / "summary.json").stat().st_mtime_ns for run in (runs[0], runs[2])] != stamps:
             failures.append("the SLURM task for index 1 touched another run")
-    for failure in failures:
-        print(f"FAIL: {failure}")
-    return 1 if failures else 0
+    return ydry_case.failed(failures)
 
 
 if __name__ == "__main__":

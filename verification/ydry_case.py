@@ -47,6 +47,21 @@ def script_parser(doc):
                                    epilog="\n".join(doc.splitlines()[2:]))
 
 
+def test_arguments(doc):
+    """The arguments of a script test run by ctest (tests/test_*.py): --ydry (default
+    build/ydry)."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
+    return parser.parse_args()
+
+
+def failed(failures):
+    """Prints `FAIL: ...` for each failure of a script test; its exit code."""
+    for failure in failures:
+        print(f"FAIL: {failure}")
+    return 1 if failures else 0
+
+
 def run_ydry(ydry, deck, outdir, overrides=()):
     """Run `ydry DECK -o OUTDIR --force --quiet --set o ...`; return the wall time in seconds,
     or None if ydry failed."""
