@@ -5,10 +5,13 @@ JOBS     ?= $(shell nproc)
 DECK     ?= inputs/peron/peron.toml
 OUTDIR   ?= runs/$(basename $(notdir $(DECK)))
 PYTHON   ?= /usr/bin/python3
+SWEEPS_OUT ?= runs/sweeps
+SWEEPS   ?= inputs/sweeps/young.toml inputs/sweeps/alpha.toml inputs/sweeps/thickness.toml
+THREADS  ?=
 # Test time on CI: ctest runs its cases on every core.
 CTEST_FLAGS ?= --output-on-failure -j $(JOBS)
 
-.PHONY: all deps configure build run test verify bench clean
+.PHONY: all deps configure build run test verify bench sweeps clean
 
 all: build
 
@@ -40,6 +43,15 @@ verify: build
 bench: build
 	$(PYTHON) bench/run_bench.py --build $(BUILD) $(if $(PERON_RUN),--peron-run $(PERON_RUN)) \
 	  $(if $(filter 1,$(PERON)),--peron)
+
+# The paper's three sweeps (section 6: E, alpha, thickness), JOBS runs at a time with THREADS
+# threads each (default: the cores shared out), then their figures and tables in
+# $(SWEEPS_OUT)/plots (README "Sweeps": hours). Run it again after an interruption: completed
+# runs are skipped.
+sweeps: build
+	$(PYTHON) scripts/sweep.py $(SWEEPS) --out $(SWEEPS_OUT) --ydry $(BUILD)/ydry --jobs $(JOBS) \
+	  $(if $(THREADS),--threads $(THREADS))
+	$(PYTHON) scripts/plot_sweep.py $(SWEEPS_OUT) --out $(SWEEPS_OUT)/plots
 
 clean:
 	rm -rf $(BUILD)
