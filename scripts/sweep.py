@@ -134,6 +134,12 @@ def load_sweep_file(path):
             raise SweepError(f"{path}: {key}: a string is required")
     if ("values" in spec) == ("entries" in spec):
         raise SweepError(f"{path}: give either values or [[entries]]")
+    if not isinstance(spec.get("values", spec.get("entries")), list) or not spec.get("values", spec.get("entries")):
+        raise SweepError(f"{path}: {'values' if 'values' in spec else 'entries'}: a list of at least one")
+    if not isinstance(spec.get("scale", 1.0), (int, float)) or not isinstance(spec.get("unit", ""), str):
+        raise SweepError(f"{path}: scale is a number, unit a string")
+    if not all(isinstance(k, int) for k in spec.get("figures", [])):
+        raise SweepError(f"{path}: figures: a list of figure numbers")
     if spec.get("cracks", "surface") not in CRACK_KINDS:
         raise SweepError(f"{path}: cracks: one of {', '.join(CRACK_KINDS)}")
     common = overrides_list(path, "set", spec.get("set", []))
