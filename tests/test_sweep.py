@@ -10,7 +10,9 @@ seconds of CPU each), one run at a time:
    runs again and completes;
 3. run 1's folder removed, the body of OUT/sweep.slurm run with bash and SLURM_ARRAY_TASK_ID=1:
    it makes run 1 again (end time 2000 s) and touches no other run.
-Exits 1 on any failure.
+And the shipped sweeps, inputs/sweeps/*.toml, planned without running (--slurm-only: every
+deck and override checked by ydry): 8 runs for their 9 values (E = 4 MPa and alpha = 0.08 are
+one). Exits 1 on any failure.
 """
 import json
 import os
@@ -20,6 +22,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import tomllib
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -124,6 +127,15 @@ def main():
             failures.append(f"the SLURM task's run ended at {task.get('time_s')} s, completed {task.get('completed')}")
         if [(run / "summary.json").stat().st_mtime_ns for run in (runs[0], runs[2])] != stamps:
             failures.append("the SLURM task for index 1 touched another run")
+        # The shipped sweeps.
+        shipped = sorted((REPO / "inputs" / "sweeps").glob("*.toml"))
+        shipped = [path for path in shipped if "deck" in tomllib.loads(path.read_text())]
+        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "sweep.py"), *map(str, shipped), "--out",
+                               str(Path(tmp) / "shipped"), "--ydry", str(args.ydry), "--slurm-only"],
+                              capture_output=True, text=True)
+        print(proc.stdout + proc.stderr)
+        if proc.returncode != 0 or "8 runs for 9 values" not in proc.stdout:
+            failures.append(f"the shipped sweeps {[path.name for path in shipped]} do not plan as 8 runs for 9 values")
     return ydry_case.failed(failures)
 
 
