@@ -85,7 +85,19 @@ void prepare_output_dir(const std::string& outdir, bool force) {
     }
   }
   fs::create_directories(dir / "frames");
-  std::ofstream(dir / kMarker) << "This folder holds ydry output; ydry may overwrite it.\n";
+  write_file_atomically((dir / kMarker).string(), "This folder holds ydry output; ydry may overwrite it.\n");
+}
+
+void resume_output_dir(const std::string& outdir) {
+  const fs::path dir(outdir);
+  if (!fs::exists(dir / kMarker))
+    throw InputError(outdir + ": holds no ydry run to continue (a restart writes into the run's own output folder, "
+                              "which holds the frames written before the checkpoint)");
+  for (const fs::path& folder : {dir, dir / "frames", dir / "checkpoints"}) {
+    if (!fs::is_directory(folder)) continue;
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (entry.path().extension() == ".tmp") fs::remove(entry.path());
+  }
 }
 
 void write_series_csv(const std::string& path, const Series& series) {
@@ -113,8 +125,8 @@ std::string JsonObject::dump() const {
   return out + "}\n";
 }
 
-void Log::open(const std::string& path, bool quiet_console) {
-  file.open(path, std::ios::trunc);
+void Log::open(const std::string& path, bool quiet_console, bool append) {
+  file.open(path, append ? std::ios::app : std::ios::trunc);
   quiet = quiet_console;
   stderr_is_terminal = isatty(STDERR_FILENO);
 }

@@ -20,6 +20,11 @@ std::string format_double(double v);
 // (whose outputs are then removed); refuses anything else unless `force`. InputError.
 void prepare_output_dir(const std::string& outdir, bool force);
 
+// Makes a run's own OUTDIR ready for its restart: InputError unless it holds a ydry run;
+// removes the temporary files a killed process may have left (NAME.tmp, in it, frames/ and
+// checkpoints/), and keeps everything else for the restart to continue.
+void resume_output_dir(const std::string& outdir);
+
 // The columns of series.csv, in order (DESIGN section 5); summary.json repeats the last row.
 extern const std::vector<std::string> kSeriesColumns;
 
@@ -43,7 +48,7 @@ struct Log {
   std::ofstream file;
   bool quiet = false;
   bool stderr_is_terminal = false;
-  void open(const std::string& path, bool quiet_console);
+  void open(const std::string& path, bool quiet_console, bool append = false);
   void info(const std::string& message);
   void warning(const std::string& message);
 };
