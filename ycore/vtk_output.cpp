@@ -192,9 +192,10 @@ void resume_frame_series(FrameSeries& series, const std::vector<double>& times) 
                                                   "the run's own output folder)");
     series.files.push_back(frame_file(series.name, "", i));
   }
+  // The .pvd first: at no moment does it list a frame that is not there.
+  write_file_atomically(series.outdir + "/" + series.name + ".pvd", pvd_text(series));
   for (std::size_t i = times.size(); fs::exists(path("", i)) || fs::exists(path("_cracks", i)); ++i)
     for (const char* part : {"", "_cracks"}) fs::remove(path(part, i));
-  write_file_atomically(series.outdir + "/" + series.name + ".pvd", pvd_text(series));
 }
 
 }  // namespace ydry
