@@ -189,6 +189,7 @@ TEST_CASE("a damaged, truncated, foreign or mismatched checkpoint is refused wit
   layer += " --set 'mesh.file=\"" + dir.file("mesh.msh") + "\"' --set run.end_time=100 --set run.output_interval=100 "
            "--set run.series_interval=100 --set solver.mechanics_interval=100";
   REQUIRE(run_ydry(layer).exit_code == 0);
+  refused("", "-o " + dir.file("layer"), "holds another run than the checkpoint's");
   std::string mesh = read_text(dir.file("mesh.msh"));
   const std::size_t node = mesh.find("0.01446000902242 ");
   REQUIRE(node != std::string::npos);

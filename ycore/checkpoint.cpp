@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "version.h"
@@ -135,12 +134,10 @@ std::string checkpoint_bytes(const Deck& deck, const std::string& deck_text, con
 }
 
 Checkpoint read_checkpoint_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": checkpoint file not found or not readable");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
+  std::optional<std::string> bytes = read_file(path);
+  if (!bytes) throw InputError(path + ": checkpoint file not found or not readable");
   try {
-    return read_checkpoint(bytes.str());
+    return read_checkpoint(std::move(*bytes));
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }

@@ -67,6 +67,14 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   fs::rename(tmp, path);
 }
 
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 void prepare_output_dir(const std::string& outdir, bool force) {
   const fs::path dir(outdir);
   if (fs::exists(dir) && !fs::is_directory(dir))
@@ -88,11 +96,13 @@ void prepare_output_dir(const std::string& outdir, bool force) {
   write_file_atomically((dir / kMarker).string(), "This folder holds ydry output; ydry may overwrite it.\n");
 }
 
-void resume_output_dir(const std::string& outdir) {
+void resume_output_dir(const std::string& outdir, const std::string& deck_text) {
   const fs::path dir(outdir);
   if (!fs::exists(dir / kMarker))
     throw InputError(outdir + ": holds no ydry run to continue (a restart writes into the run's own output folder, "
                               "which holds the frames written before the checkpoint)");
+  if (read_file((dir / "deck.toml").string()) != deck_text)
+    throw InputError(outdir + ": holds another run than the checkpoint's (its deck.toml is not the checkpoint's)");
   for (const fs::path& folder : {dir, dir / "frames", dir / "checkpoints"}) {
     if (!fs::is_directory(folder)) continue;
     for (const auto& entry : fs::directory_iterator(folder))

@@ -307,7 +307,7 @@ int run(const RunOptions& opt) {
                              : restart           ? run_folder_of(opt.restart_path)
                                                  : "runs/" + deck.name;
   if (restart)
-    resume_output_dir(outdir);
+    resume_output_dir(outdir, deck_text);
   else
     prepare_output_dir(outdir, opt.force);
 
