@@ -79,26 +79,26 @@ void hash_array(std::uint64_t& hash, const std::vector<T>& v) {
   hash = fnv1a64(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T), hash);
 }
 
-void require_finite(const std::vector<double>& v, const char* name) {
+void require_finite(const Checkpoint& c, const std::vector<double>& v, const char* name) {
   for (std::size_t i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))
-      throw InputError("checkpoint field '" + std::string(name) + "' holds a non-finite value at " + std::to_string(i));
+      throw InputError(c.source + ": field '" + name + "' holds a non-finite value at " + std::to_string(i));
 }
 
 // The restored pairs must be what a broad phase makes: sorted by (corner, edge), no two
 // alike, each a surface corner against a surface edge, with a slip and six force components
 // each; then the gather lists follow from them.
-void check_contact_pairs(const State& s) {
+void check_contact_pairs(const State& s, const Checkpoint& checkpoint) {
   const Contact& c = s.contact;
   const std::size_t np = c.pair_node.size(), surfaces = c.is_surface_edge.size();  // 0 without mechanics
   if (c.pair_edge.size() != np || c.pair_slip.size() != np || c.pair_force.size() != 6 * np)
-    throw InputError("checkpoint contact pairs: node, edge, slip and force lists of different lengths");
+    throw InputError(checkpoint.source + ": contact pairs: node, edge, slip and force lists of different lengths");
   for (std::size_t k = 0; k < np; ++k) {
     const index_t i = c.pair_node[k], e = c.pair_edge[k];
     const bool in_order = k == 0 || c.pair_node[k - 1] < i || (c.pair_node[k - 1] == i && c.pair_edge[k - 1] < e);
     if (i >= surfaces || e >= surfaces || !c.is_surface_edge[e] || !(c.is_surface_edge[i] || c.is_surface_edge[previous_corner(i)]) ||
         !in_order)
-      throw InputError("checkpoint contact pair " + std::to_string(k) + " (corner " + std::to_string(i) + ", edge " +
+      throw InputError(checkpoint.source + ": contact pair " + std::to_string(k) + " (corner " + std::to_string(i) + ", edge " +
                        std::to_string(e) + ") is not a surface corner against a surface edge, in order");
   }
 }
@@ -137,7 +137,9 @@ Checkpoint read_checkpoint_file(const std::string& path) {
   std::optional<std::string> bytes = read_file(path);
   if (!bytes) throw InputError(path + ": checkpoint file not found or not readable");
   try {
-    return read_checkpoint(std::move(*bytes));
+    Checkpoint c = read_checkpoint(std::move(*bytes));
+    c.source = path;
+    return c;
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -177,16 +179,16 @@ void restore_broken_joints(State& s, const Checkpoint& c) {
   std::uint64_t fingerprint = 0;
   c.take("setup_fingerprint", fingerprint);
   if (fingerprint != setup_fingerprint(s))
-    throw InputError("the deck's mesh and set-up are not those the checkpoint was written from (has the mesh file "
+    throw InputError(c.source + ": the deck's mesh and set-up are not those it was written from (has the mesh file "
                      "changed, or was it written by another version of ydry?)");
   std::vector<std::uint8_t> broken;
   c.take("joints.broken", broken);
   if (broken.size() != s.joints.size())
-    throw InputError("checkpoint field 'joints.broken' holds " + std::to_string(broken.size()) + " joints, the mesh " +
+    throw InputError(c.source + ": field 'joints.broken' holds " + std::to_string(broken.size()) + " joints, the mesh " +
                      std::to_string(s.joints.size()));
   for (std::size_t j = 0; j < broken.size(); ++j)
     if (broken[j] > 1 || broken[j] < s.joints.broken[j])
-      throw InputError("checkpoint joint " + std::to_string(j) +
+      throw InputError(c.source + ": joint " + std::to_string(j) +
                        (broken[j] > 1 ? " has a broken flag that is neither 0 nor 1" : " is intact, but the deck's "
                                                                                       "pre-existing cracks break it"));
   s.joints.broken = std::move(broken);
@@ -207,16 +209,16 @@ void restore_state(State& s, const Checkpoint& c) {
       const std::size_t size = value.size();
       c.take(name, value);
       if (value.size() != size)
-        throw InputError("checkpoint field '" + name + "' holds " + std::to_string(value.size()) +
+        throw InputError(c.source + ": field '" + name + "' holds " + std::to_string(value.size()) +
                          " values; this deck and mesh have " + std::to_string(size));
     }
   });
-  require_finite(s.nodes.x, "nodes.x");
-  require_finite(s.nodes.y, "nodes.y");
-  require_finite(s.nodes.vx, "nodes.vx");
-  require_finite(s.nodes.vy, "nodes.vy");
-  require_finite(s.moisture.w, "moisture.w");
-  check_contact_pairs(s);
+  require_finite(c, s.nodes.x, "nodes.x");
+  require_finite(c, s.nodes.y, "nodes.y");
+  require_finite(c, s.nodes.vx, "nodes.vx");
+  require_finite(c, s.nodes.vy, "nodes.vy");
+  require_finite(c, s.moisture.w, "moisture.w");
+  check_contact_pairs(s, c);
   if (s.contact.builds > 0) index_contact_pairs(s);  // a broad phase has run: the pairs are current
 }
 
@@ -227,13 +229,13 @@ RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& 
   c.take("record.series", rows);
   const std::size_t columns = kSeriesColumns.size();
   if (rows.size() % columns != 0)
-    throw InputError("checkpoint field 'record.series' does not hold whole rows of series.csv");
+    throw InputError(c.source + ": field 'record.series' does not hold whole rows of series.csv");
   for (std::size_t k = 0; k < rows.size(); k += columns)
     r.series.rows.emplace_back(rows.begin() + std::ptrdiff_t(k), rows.begin() + std::ptrdiff_t(k + columns));
   // Whatever the loop would trip over: a row count that is not the rows', a time or step it
   // could not go on from.
-  const auto valid = [](bool ok, const char* what) {
-    if (!ok) throw InputError(std::string("checkpoint's ") + what);
+  const auto valid = [&](bool ok, const char* what) {
+    if (!ok) throw InputError(c.source + ": its " + what);
   };
   valid(s.time_s >= 0.0 && s.time_s <= deck.end_time_s, "time is not within the run (0 to run.end_time)");
   valid(r.row >= 1 && r.series.rows.size() == r.row, "row count is not the number of rows of series.csv it holds");

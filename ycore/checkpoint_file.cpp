@@ -112,12 +112,12 @@ void Checkpoint::take(const std::string& name, bool& out) const {
 
 const Checkpoint::Field& Checkpoint::field(const std::string& name, FieldType type, std::size_t count) const {
   const auto found = fields.find(name);
-  if (found == fields.end()) throw InputError("checkpoint has no field '" + name + "'");
+  if (found == fields.end()) throw InputError(source + ": has no field '" + name + "'");
   const Field& f = found->second;
   if (f.type != type)
-    throw InputError("checkpoint field '" + name + "' holds " + type_name(f.type) + ", not " + type_name(type));
+    throw InputError(source + ": field '" + name + "' holds " + type_name(f.type) + ", not " + type_name(type));
   if (count > 0 && f.count != count)
-    throw InputError("checkpoint field '" + name + "' holds " + std::to_string(f.count) + " values, not " +
+    throw InputError(source + ": field '" + name + "' holds " + std::to_string(f.count) + " values, not " +
                      std::to_string(count));
   return f;
 }

@@ -70,6 +70,7 @@ struct Checkpoint {
     std::size_t offset, count;
   };
   std::string bytes;
+  std::string source = "checkpoint";  // its file, for messages
   std::string ydry_version;
   std::uint64_t deck_hash = 0;
   std::map<std::string, Field> fields;
