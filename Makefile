@@ -34,7 +34,11 @@ run: build
 test: build
 	cd $(BUILD) && ctest $(CTEST_FLAGS)
 
-verify: build
+# The paraview case needs ParaView's pvpython: installed before the build is configured, so that
+# ctest finds it too.
+verify:
+	@scripts/install-deps.sh --with-paraview
+	$(MAKE) build
 	$(PYTHON) verification/run_all.py --ydry $(BUILD)/ydry
 
 # Throughput figures, appended to bench/RESULTS.md (2 to 5 minutes on this 2-core machine).

@@ -2,7 +2,7 @@
 # Install the Debian 12 packages ydry needs (DESIGN section 7). Idempotent: installs only
 # what is missing, and runs `apt-get update` first when anything is.
 #   scripts/install-deps.sh                  build, test, plotting and rendering dependencies
-#   scripts/install-deps.sh --with-paraview  also the ParaView GUI
+#   scripts/install-deps.sh --with-paraview  also ParaView and its Python client, pvpython
 set -euo pipefail
 
 packages=(
@@ -12,15 +12,25 @@ packages=(
   python3 python3-numpy python3-matplotlib python3-vtk9
   xvfb  # Debian's VTK renders through X only: scripts/render_frame.py runs under xvfb-run
 )
+with_paraview=0
 for arg in "$@"; do
   case "$arg" in
-    # Debian 12's python3-paraview (pvpython) conflicts with python3-vtk9, which libvtk9-dev
-    # needs: installing it removes the build dependencies. Only the GUI comes here.
-    --with-paraview) packages+=(paraview) ;;
+    # The GUI and pvbatch. Debian 12's python3-paraview (pvpython and ParaView's Python
+    # modules) conflicts with python3-vtk9, which libvtk9-dev needs: installing it removes the
+    # build dependencies, and so would apt's default of installing what paraview recommends.
+    --with-paraview) packages+=(paraview); with_paraview=1 ;;
     -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo="sudo"
+fi
+need_root() {
+  [ -z "$sudo" ] || command -v sudo >/dev/null || { echo "install-deps: need root or sudo to $1" >&2; exit 1; }
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -28,15 +38,40 @@ for p in "${packages[@]}"; do
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  need_root "install: ${missing[*]}"
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo="sudo"
+# pvpython without python3-paraview: its files unpacked, outside dpkg, under $prefix (the
+# same version as paraview), and a `pvpython` that runs a script with paraview's pvbatch on
+# them. Debian's own pvpython would not do here: it puts /usr/lib/python3/dist-packages, where
+# python3-vtk9's VTK 9.1 lives, ahead of ParaView's modules, and crashes on importing them.
+prefix=/opt/python3-paraview
+launcher=/usr/local/bin/pvpython
+if [ "$with_paraview" -eq 1 ] && ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null | grep -q "install ok installed"; then
+  version=$(dpkg-query -W -f='${Version}' paraview)
+  if [ "$(cat "$prefix/VERSION" 2>/dev/null)" != "$version" ] || [ ! -x "$launcher" ]; then
+    need_root "unpack python3-paraview into $prefix"
+    echo "install-deps: unpacking python3-paraview $version into $prefix (not installed with dpkg)"
+    download=$(mktemp -d)
+    chmod 755 "$download"  # apt-get download fetches as the _apt user
+    $sudo apt-get update -qq
+    (cd "$download" && apt-get download -qq "python3-paraview=$version")
+    $sudo rm -rf "$prefix"
+    $sudo dpkg-deb -x "$download"/python3-paraview_*.deb "$prefix"
+    rm -rf "$download"
+    echo "$version" | $sudo tee "$prefix/VERSION" >/dev/null
+    $sudo tee "$launcher" >/dev/null <<EOF
+#!/bin/sh
+# pvpython for Debian 12 beside python3-vtk9, written by ydry's scripts/install-deps.sh:
+# ParaView's pvbatch running a script on python3-paraview $version, unpacked in $prefix.
+# Without a display, run it as \`xvfb-run -a pvpython SCRIPT.py\`.
+PYTHONPATH=$prefix/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH} exec /usr/bin/pvbatch "\$@"
+EOF
+    $sudo chmod 755 "$launcher"
+  fi
 fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

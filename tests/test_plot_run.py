@@ -18,8 +18,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "verification"))
 import ydry_case  # noqa: E402
 
-OVERRIDES = ["run.end_time=20000", "mesh.element_size=0.004", "materials.soil.shrinkage_coefficient=0.4",
-             "materials.soil.gf_I=0.02"]
+OVERRIDES = ["run.end_time=20000", *ydry_case.DEMO_EARLY_CRACKING]
 FIGURES = ["fig18_moisture.png", "fig19_crack_pattern.png", "fig20_vertical_displacement.png",
            "fig21_horizontal_displacement.png", "fig22_surface_displacement.png",
            "fig23_crack_width.png", "fig24_crack_length.png"]
@@ -35,7 +34,7 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory(prefix="ydry_plot_run_") as tmp:
         run, out = Path(tmp) / "run", Path(tmp) / "plots"
-        if ydry_case.run_ydry(args.ydry, REPO / "inputs/demo/drying_layer.toml", run, OVERRIDES) is None:
+        if ydry_case.run_ydry(args.ydry, ydry_case.DEMO_DECK, run, OVERRIDES) is None:
             return 1
         proc = plot_run(run, "--out", out)
         print(proc.stdout + proc.stderr)

@@ -2,13 +2,112 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 
+#include "ycore/mechanics.h"
+
 namespace ydry_test {
+
+const char* const kPeronDeck = YDRY_SOURCE_DIR "/inputs/peron/peron.toml";
+const std::vector<std::string> kCrackingLayer = {
+    "mesh.file=\"" YDRY_SOURCE_DIR "/tests/data/notched_layer.msh\"",
+    "run.end_time=3000",
+    "run.output_interval=1500",
+    "run.series_interval=1000",
+    "solver.mechanics_interval=1000",
+    "materials.soil.shrinkage_coefficient=0.4",
+    "materials.soil.gf_I=0.02",
+    "solver.relaxation_tolerance=1e-4",
+    "solver.relaxation_max_steps=3000"};
+
+namespace {
+
+template <class T>
+std::vector<double> as_doubles(const std::vector<T>& v) {
+  return {v.begin(), v.end()};
+}
+
+}  // namespace
+
+Snapshot state_snapshot(const ydry::State& s) {
+  const ydry::Energies e = ydry::energies(s);
+  const ydry::MoistureNodes& m = s.moisture;
+  const ydry::Contact& c = s.contact;
+  Snapshot snapshot = {
+      {"x", s.nodes.x},
+      {"y", s.nodes.y},
+      {"vx", s.nodes.vx},
+      {"vy", s.nodes.vy},
+      {"shrinkage strain", s.triangles.shrinkage_strain},
+      {"stress xx", s.triangles.sxx},
+      {"stress yy", s.triangles.syy},
+      {"stress xy", s.triangles.sxy},
+      {"moisture w", m.w},
+      {"moisture node of each corner", as_doubles(s.nodes.mnode)},
+      {"tie group of each corner", as_doubles(s.nodes.tie_group)},
+      {"moisture node corners", as_doubles(m.corner_offset)},
+      {"moisture node corner list", as_doubles(m.corner)},
+      {"moisture node dry mass", m.dry_mass},
+      {"moisture node fixed w", m.fixed_w},
+      {"moisture terms", as_doubles(m.term_offset)},
+      {"moisture term areas", m.term_area},
+      {"moisture term rates", m.term_rate},
+      {"moisture term levels", m.term_level},
+      {"moisture boundary nodes", as_doubles(m.boundary_node)},
+      {"joint damage", s.joints.damage},
+      {"joint broken", as_doubles(s.joints.broken)},
+      {"joint work", s.joints.work},
+      {"joint force", s.joints.force},
+      {"contact surface edges", as_doubles(c.surface_edge)},
+      {"contact surface nodes", as_doubles(c.surface_node)},
+      {"contact pair nodes", as_doubles(c.pair_node)},
+      {"contact pair edges", as_doubles(c.pair_edge)},
+      {"contact pairs of each node", as_doubles(c.node_pairs)},
+      {"contact gather offsets", as_doubles(c.gather_offset)},
+      {"contact gather entries", as_doubles(c.gather_entry)},
+      {"contact pair slip", c.pair_slip},
+      {"contact pair force", c.pair_force},
+      {"contact built at x", c.x_built},
+      {"contact built at y", c.y_built},
+      {"contact work", {c.work_J}},
+      {"energies", {e.kinetic_J, e.elastic_J, e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J,
+                    e.gravity_work_J}},
+      {"water", {s.water.initial_kg, s.water.net_in_kg, s.water.net_in_carry, s.water.gross_kg}},
+      {"mechanics", {s.mechanics.unrelaxed_s, s.mechanics.last_residual, double(s.mechanics.capped_relaxations)}},
+      {"time and steps", {s.time_s, double(s.mechanics.steps), double(s.moisture_steps), double(c.builds)}}};
+  for (const ydry::MoistureTermKind kind : m.term_kind) snapshot["moisture term kinds"].push_back(double(kind));
+  for (const ydry::MechanicsBoundary& b : s.mechanics_boundaries)
+    snapshot["boundary " + b.name] = {b.reaction_x, b.reaction_y, b.work_J};
+  return snapshot;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+std::string without_run_facts(const std::string& text) {
+  static const std::regex facts(R"("threads": \d+|"wall_s": [^,\n]+|\d+ threads|wall [^ ,\n]+ s)");
+  return std::regex_replace(text, facts, "<run fact>");
+}
+
+bool same_but_run_facts(const std::filesystem::path& a, const std::filesystem::path& b) {
+  return without_run_facts(read_text(a.string())) == without_run_facts(read_text(b.string()));
+}
+
+std::vector<std::string> files_under(const std::filesystem::path& folder) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+    if (entry.is_regular_file()) files.push_back(std::filesystem::relative(entry.path(), folder).string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 TempDir::TempDir() {
   static std::atomic<int> counter{0};

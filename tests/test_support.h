@@ -5,11 +5,13 @@
 #include <omp.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "ycore/blocked_sum.h"
 #include "ycore/deck.h"
+#include "ycore/state.h"
 
 namespace ydry_test {
 
@@ -31,6 +33,32 @@ ydry::Deck strip_deck(const std::vector<std::string>& overrides = {});
 // A free-standing block of breakable soil (E = 1 MPa, 1000 kg/m^3), 4 x 3 mm in 1 mm cells of
 // `pattern`, no gravity, no boundaries; written into `dir` and read with the overrides.
 ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vector<std::string>& sets = {});
+
+// The Peron deck on its 40 mm cousin tests/data/notched_layer.msh (642 triangles: soil on a
+// rigid notched base, in contact and with friction from the start), the soil made to crack
+// early (shrinkage coefficient 0.4, gf_I 0.02 J/m^2) and the relaxations kept short
+// (tolerance 1e-4, cap 3000 steps): the first joint breaks by 2000 s, three by 3000 s, in
+// some 10,000 steps; 105 coupling steps of 29.2 s, rows every 1000 s, frames every 1500 s.
+extern const char* const kPeronDeck;
+extern const std::vector<std::string> kCrackingLayer;
+
+// A state's arrays by name, flags, indices and counts as doubles: every array a run changes,
+// what is rebuilt from the broken joints (moisture nodes and their terms, tie groups, contact
+// surfaces and pair index), and the energies.
+using Snapshot = std::map<std::string, std::vector<double>>;
+Snapshot state_snapshot(const ydry::State& state);
+
+// Whether two arrays hold the same bits.
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b);
+
+// A file's text without the facts a run states about its execution: the thread count and the
+// wall time (summary.json's "threads" and "wall_s", and the log's prose).
+std::string without_run_facts(const std::string& text);
+// Whether two files hold the same bytes but for the run facts.
+bool same_but_run_facts(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// The files under `folder`, as paths relative to it, sorted.
+std::vector<std::string> files_under(const std::filesystem::path& folder);
 
 // Runs body(threads) on 1, then 2 OpenMP threads with every loop in parallel however short
 // (parallel_minimum = 0), for the tests that results are bitwise the same on any thread

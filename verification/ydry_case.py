@@ -1,11 +1,12 @@
 """Shared helpers for the verification check scripts and the scripts that read runs.
 
-Run ydry on a deck into an output folder, read its CSV files into dicts of numpy arrays, list
-the frames of its .pvd and read them (any frame, or the last one, as arrays), find the
-displacement of the crack lines, and print the suite verdict lines
+The demo deck and the overrides that make it crack early (for short runs: paraview and
+tests/test_plot_run.py). Run ydry on a deck into an output folder, read its CSV files into
+dicts of numpy arrays, list the frames of its .pvd and read them (any frame, or the last one,
+as arrays), find the displacement of the crack lines, and print the suite verdict lines
 `CASE METRIC VALUE TOLERANCE PASS|FAIL` while remembering whether any failed. Used by
-shrinkage, fracture_modeI, fracture_modeII, crack_moisture and the contact cases (strip1d
-keeps its own copy) and peron, and by scripts/render_frame.py, scripts/plot_run.py and
+shrinkage, fracture_modeI, fracture_modeII, crack_moisture, the contact cases (strip1d keeps
+its own copy), peron and paraview, and by scripts/render_frame.py, scripts/plot_run.py and
 run_report.py.
 """
 import argparse
@@ -21,6 +22,11 @@ from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 REPO = Path(__file__).resolve().parents[1]
+DEMO_DECK = REPO / "inputs" / "demo" / "drying_layer.toml"
+# --set overrides that make the demo's soil crack early, for short test runs: a 4 mm mesh
+# (300 triangles), shrinkage coefficient 0.4 and gf_I 0.02 J/m^2 (cracks from the first 2000 s).
+DEMO_EARLY_CRACKING = ["mesh.element_size=0.004", "materials.soil.shrinkage_coefficient=0.4",
+                       "materials.soil.gf_I=0.02"]
 
 
 def case_parser(doc, here):

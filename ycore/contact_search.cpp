@@ -120,32 +120,38 @@ void build_contact_pairs(State& s) {
   c.pair_force = std::move(force);
   c.pair_node.resize(pairs.size());
   c.pair_edge.resize(pairs.size());
-  c.node_pairs.clear();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     c.pair_node[k] = pairs[k].node;
     c.pair_edge[k] = pairs[k].edge;
-    if (k == 0 || pairs[k].node != pairs[k - 1].node) c.node_pairs.push_back(index_t(k));
   }
-  c.node_pairs.push_back(index_t(pairs.size()));
-
-  // Per receiving node, the pair forces it gathers, in pair order (a counting sort).
-  c.gather_offset.assign(n.size() + 1, 0);
-  const auto receiver = [&](std::size_t k, int slot) {
-    return slot == 0 ? c.pair_node[k] : slot == 1 ? c.pair_edge[k] : next_corner(c.pair_edge[k]);
-  };
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-    for (int slot = 0; slot < 3; ++slot) ++c.gather_offset[receiver(k, slot) + 1];
-  std::partial_sum(c.gather_offset.begin(), c.gather_offset.end(), c.gather_offset.begin());
-  c.gather_entry.resize(3 * pairs.size());
-  std::vector<index_t> fill(c.gather_offset.begin(), c.gather_offset.end() - 1);
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-    for (int slot = 0; slot < 3; ++slot) c.gather_entry[fill[receiver(k, slot)]++] = index_t(3 * k + slot);
-
+  index_contact_pairs(s);
   for (std::size_t k = 0; k < c.surface_node.size(); ++k) {
     c.x_built[k] = n.x[c.surface_node[k]];
     c.y_built[k] = n.y[c.surface_node[k]];
   }
   ++c.builds;
+}
+
+void index_contact_pairs(State& s) {
+  Contact& c = s.contact;
+  const std::size_t np = c.pair_node.size();
+  c.node_pairs.clear();
+  for (std::size_t k = 0; k < np; ++k)
+    if (k == 0 || c.pair_node[k] != c.pair_node[k - 1]) c.node_pairs.push_back(index_t(k));
+  c.node_pairs.push_back(index_t(np));
+
+  // Per receiving node, the pair forces it gathers, in pair order (a counting sort).
+  c.gather_offset.assign(s.nodes.size() + 1, 0);
+  const auto receiver = [&](std::size_t k, int slot) {
+    return slot == 0 ? c.pair_node[k] : slot == 1 ? c.pair_edge[k] : next_corner(c.pair_edge[k]);
+  };
+  for (std::size_t k = 0; k < np; ++k)
+    for (int slot = 0; slot < 3; ++slot) ++c.gather_offset[receiver(k, slot) + 1];
+  std::partial_sum(c.gather_offset.begin(), c.gather_offset.end(), c.gather_offset.begin());
+  c.gather_entry.resize(3 * np);
+  std::vector<index_t> fill(c.gather_offset.begin(), c.gather_offset.end() - 1);
+  for (std::size_t k = 0; k < np; ++k)
+    for (int slot = 0; slot < 3; ++slot) c.gather_entry[fill[receiver(k, slot)]++] = index_t(3 * k + slot);
 }
 
 bool contact_pairs_stale(const State& s) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 #include "ycore/input_error.h"
@@ -211,20 +212,10 @@ void read_solver(TableReader r, Deck& d) {
   r.finish();
 }
 
-}  // namespace
-
-Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
-  Deck d;
-  d.path = path;
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": deck file not found");
+// The schema applied to a parsed deck; `d` holds its path and the parsed table.
+Deck read_deck(Deck d, const std::vector<std::string>& overrides) {
   toml::table& root = d.resolved;
-  Origin origin{path, {}};
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " +
-                     std::string(e.description()));
-  }
+  Origin origin{d.path, {}};
   for (const std::string& o : overrides) apply_override(root, o, origin);
 
   TableReader top(root, "", origin);
@@ -252,12 +243,38 @@ Deck load_deck(const std::string& path, const std::vector<std::string>& override
   return d;
 }
 
-std::string resolved_deck_text(const Deck& deck) {
+// `source` parsed as TOML into a deck named by it (errors name its lines).
+Deck parse_deck(const std::string& source, const std::function<toml::table()>& parse) {
+  Deck d;
+  d.path = source;
+  try {
+    d.resolved = parse();
+  } catch (const toml::parse_error& e) {
+    throw InputError(source + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
+  return d;
+}
+
+}  // namespace
+
+Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": deck file not found");
+  return read_deck(parse_deck(path, [&] { return toml::parse_file(path); }), overrides);
+}
+
+Deck load_deck_text(const std::string& text, const std::string& source) {
+  return read_deck(parse_deck(source, [&] { return toml::parse(text, source); }), {});
+}
+
+std::string resolved_deck_values(const Deck& deck) {
   std::ostringstream out;
-  out << "# The deck as this run used it: " << deck.path
-      << " with --set overrides and defaults applied.\n"
-      << toml::toml_formatter(deck.resolved) << "\n";
+  out << toml::toml_formatter(deck.resolved) << "\n";
   return out.str();
+}
+
+std::string resolved_deck_text(const Deck& deck) {
+  return "# The deck as this run used it: " + deck.path + " with --set overrides and defaults applied.\n" +
+         resolved_deck_values(deck);
 }
 
 }  // namespace ydry

@@ -119,7 +119,16 @@ struct Deck {
 // that is not TOML is taken as a string). Throws InputError.
 Deck load_deck(const std::string& path, const std::vector<std::string>& overrides);
 
-// The resolved deck as TOML text (what deck.toml in the output holds).
+// A deck given as text (a checkpoint's deck.toml), read like a file named `source`, which
+// its error messages name.
+Deck load_deck_text(const std::string& text, const std::string& source);
+
+// The resolved deck as TOML text (what deck.toml in the output holds): a header line that
+// names the deck file, then resolved_deck_values.
 std::string resolved_deck_text(const Deck& deck);
+
+// Every value of the resolved deck, as TOML: two decks that give the same text make the same
+// run, wherever their files are.
+std::string resolved_deck_values(const Deck& deck);
 
 }  // namespace ydry

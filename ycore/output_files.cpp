@@ -67,6 +67,14 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   fs::rename(tmp, path);
 }
 
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 void prepare_output_dir(const std::string& outdir, bool force) {
   const fs::path dir(outdir);
   if (fs::exists(dir) && !fs::is_directory(dir))
@@ -85,7 +93,21 @@ void prepare_output_dir(const std::string& outdir, bool force) {
     }
   }
   fs::create_directories(dir / "frames");
-  std::ofstream(dir / kMarker) << "This folder holds ydry output; ydry may overwrite it.\n";
+  write_file_atomically((dir / kMarker).string(), "This folder holds ydry output; ydry may overwrite it.\n");
+}
+
+void resume_output_dir(const std::string& outdir, const std::string& deck_text) {
+  const fs::path dir(outdir);
+  if (!fs::exists(dir / kMarker))
+    throw InputError(outdir + ": holds no ydry run to continue (a restart writes into the run's own output folder, "
+                              "which holds the frames written before the checkpoint)");
+  if (read_file((dir / "deck.toml").string()) != deck_text)
+    throw InputError(outdir + ": holds another run than the checkpoint's (its deck.toml is not the checkpoint's)");
+  for (const fs::path& folder : {dir, dir / "frames", dir / "checkpoints"}) {
+    if (!fs::is_directory(folder)) continue;
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (entry.path().extension() == ".tmp") fs::remove(entry.path());
+  }
 }
 
 void write_series_csv(const std::string& path, const Series& series) {
@@ -113,8 +135,8 @@ std::string JsonObject::dump() const {
   return out + "}\n";
 }
 
-void Log::open(const std::string& path, bool quiet_console) {
-  file.open(path, std::ios::trunc);
+void Log::open(const std::string& path, bool quiet_console, bool append) {
+  file.open(path, append ? std::ios::app : std::ios::trunc);
   quiet = quiet_console;
   stderr_is_terminal = isatty(STDERR_FILENO);
 }

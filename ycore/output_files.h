@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,20 @@ namespace ydry {
 // Writes `content` to `path` through `path`.tmp and a rename.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// The bytes of a file; nothing when it cannot be read.
+std::optional<std::string> read_file(const std::string& path);
+
 // A number as the CSV files write it: round-trip precision (%.17g), "nan" for NaN.
 std::string format_double(double v);
 
 // Makes OUTDIR ready: creates it, or accepts it when empty or holding an earlier ydry run
 // (whose outputs are then removed); refuses anything else unless `force`. InputError.
 void prepare_output_dir(const std::string& outdir, bool force);
+
+// Makes a run's own OUTDIR ready for its restart: InputError unless it holds a ydry run whose
+// deck.toml is `deck_text`; removes the temporary files a killed process may have left
+// (NAME.tmp, in it, frames/ and checkpoints/), and keeps everything else for the restart.
+void resume_output_dir(const std::string& outdir, const std::string& deck_text);
 
 // The columns of series.csv, in order (DESIGN section 5); summary.json repeats the last row.
 extern const std::vector<std::string> kSeriesColumns;
@@ -43,7 +52,7 @@ struct Log {
   std::ofstream file;
   bool quiet = false;
   bool stderr_is_terminal = false;
-  void open(const std::string& path, bool quiet_console);
+  void open(const std::string& path, bool quiet_console, bool append = false);
   void info(const std::string& message);
   void warning(const std::string& message);
 };

@@ -36,8 +36,9 @@ void Progress::update(double time_s, std::uint64_t steps, bool force) {
   const double wall = wall_s();
   char wall_text[32], eta_text[32];
   format_duration(wall_text, sizeof wall_text, wall);
-  if (fraction > 0)
-    format_duration(eta_text, sizeof eta_text, wall * (1.0 - fraction) / fraction);
+  const double done = end_time_s > 0 ? (time_s - start_time_s) / end_time_s : 0.0;  // by this process
+  if (done > 0)
+    format_duration(eta_text, sizeof eta_text, wall * (1.0 - fraction) / done);
   else
     std::snprintf(eta_text, sizeof eta_text, "--:--:--");
   std::fprintf(stderr, "%st = %.4g / %.4g s (%5.1f%%)  moisture steps %llu  wall %s  ETA %s%s",

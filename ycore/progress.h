@@ -1,5 +1,6 @@
-// Progress on stderr: simulated time, percent, steps, wall time and ETA. On a terminal one
-// line updated in place (at most 5 times a second); otherwise a plain line every `every_s`.
+// Progress on stderr: simulated time, percent, steps, wall time and ETA (at the pace of this
+// process, which a restart begins part way). On a terminal one line updated in place (at most
+// 5 times a second); otherwise a plain line every `every_s`.
 #pragma once
 
 #include <chrono>
@@ -12,6 +13,7 @@ struct Progress {
   bool terminal = false;
   double every_s = 10.0;
   double end_time_s = 0;
+  double start_time_s = 0;  // simulated time this process began at (a restart's is later)
   std::chrono::steady_clock::time_point started, last_printed;
 
   void start(double end_time, bool quiet, double plain_every_s);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -11,6 +12,8 @@
 
 #include "version.h"
 #include "ycore/build_state.h"
+#include "ycore/checkpoint.h"
+#include "ycore/interruption.h"
 #include "ycore/input_error.h"
 #include "ycore/output_files.h"
 #include "ycore/progress.h"
@@ -121,7 +124,8 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
 
 // reactions.csv: per output time and [[mechanics.boundary]], the support force and the mean
 // displacement of the boundary's nodes.
-void append_reactions(std::ostringstream& csv, const State& s) {
+void append_reactions(std::string& rows, const State& s) {
+  std::ostringstream csv;
   for (const MechanicsBoundary& b : s.mechanics_boundaries) {
     double ux = 0, uy = 0;
     for (const index_t i : b.nodes) {
@@ -131,6 +135,7 @@ void append_reactions(std::ostringstream& csv, const State& s) {
     csv << std::setprecision(17) << s.time_s << ',' << b.name << ',' << b.reaction_x << ',' << b.reaction_y
         << ',' << ux << ',' << uy << ',' << b.work_J << '\n';
   }
+  rows += csv.str();
 }
 
 // Step 4 of the loop, after joints broke: the corners are tied anew, the moisture nodes split
@@ -145,6 +150,44 @@ void split_across_broken_joints(State& s, const Deck& deck) {
     tie_corners(s.joints, s.nodes);
   }
   refresh_contact_surfaces(s);
+}
+
+// The log's first lines on a new run: the code, the deck, the mesh and the steps.
+void log_set_up(Log& log, const State& state, const Deck& deck, double max_step, const std::string& outdir) {
+  std::ostringstream head;
+  head << "ydry " << YDRY_VERSION << " (" << YDRY_COMMIT << "), deck " << deck.path << ", "
+       << omp_get_max_threads() << " threads\n"
+       << "mesh: " << state.triangles.size() << " triangles, " << state.joints.size() << " joints, "
+       << state.moisture.size() << " moisture nodes";
+  log.info(head.str());
+  std::vector<std::uint8_t> material_used(state.material_names.size(), 0);
+  for (const std::uint16_t m : state.triangles.material) material_used[m] = 1;
+  for (std::size_t m = 0; m < material_used.size(); ++m)
+    if (!material_used[m])
+      log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
+  if (deck.mechanics)
+    for (std::size_t m = 0; m < state.materials.size(); ++m)
+      if (state.materials[m].strength_heterogeneity > 0.0) log.info(strength_factor_line(state, m, deck.seed));
+  std::ostringstream steps;
+  steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";
+  if (deck.mechanics)
+    steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
+          << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
+          << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
+          << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
+          << " steps, residual " << state.mechanics.last_residual << "; contact penalty "
+          << state.contact.penalty_pa << " Pa, damping " << state.contact.damping_ratio << " of critical, "
+          << state.contact.surface_edge.size() << " surface edges"
+          << (deck.dynamic ? "; dynamic: the solid moves in real time" : "");
+  log.info(steps.str() + "; output to " + outdir);
+}
+
+// A restart's output folder by default: the one that holds the checkpoint's checkpoints/.
+std::string run_folder_of(const std::string& checkpoint) {
+  const std::filesystem::path folder = std::filesystem::absolute(checkpoint).parent_path();
+  if (folder.filename() != "checkpoints")
+    throw InputError(checkpoint + ": not in a run's checkpoints/ folder; give the run's output folder with -o");
+  return folder.parent_path().string();
 }
 
 }  // namespace
@@ -175,7 +218,28 @@ State setup_state(const Deck& deck) {
   return s;
 }
 
+State state_from_checkpoint(const Deck& deck, const Checkpoint& checkpoint) {
+  State s = prepare_state(deck);
+  const std::vector<std::uint8_t> broken_at_set_up = s.joints.broken;
+  restore_broken_joints(s, checkpoint);
+  // Every break was followed by a split, whose result depends on the broken joints alone.
+  if (s.joints.broken != broken_at_set_up) split_across_broken_joints(s, deck);
+  restore_state(s, checkpoint);
+  return s;
+}
+
 int check(const RunOptions& opt) {
+  if (!opt.restart_path.empty()) {
+    const Checkpoint checkpoint = read_checkpoint_file(opt.restart_path);
+    const Deck deck = checkpoint_deck(checkpoint, opt.restart_path, opt.deck_path, opt.overrides);
+    const State state = state_from_checkpoint(deck, checkpoint);
+    checkpoint_record(checkpoint, deck, state);
+    std::cout << checkpoint_deck_text(checkpoint);
+    std::cerr << "ydry check: " << opt.restart_path << " is a valid checkpoint of run " << deck.name << " at t = "
+              << state.time_s << " s of " << deck.end_time_s << " s (coupling step " << state.moisture_steps
+              << "), written by ydry " << checkpoint.ydry_version << "\n";
+    return 0;
+  }
   const Deck deck = load_deck(opt.deck_path, opt.overrides);
   const State state = prepare_state(deck);
   std::cout << resolved_deck_text(deck);
@@ -211,7 +275,7 @@ bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   return any_moisture(s);
 }
 
-double advance_to(State& s, const Deck& deck, double until_s, double max_step_s) {
+double advance_to(State& s, const Deck& deck, double until_s, double max_step_s, const std::function<bool()>& pause) {
   while (s.time_s < until_s) {
     const double remaining = until_s - s.time_s;
     // The last step lands exactly on until_s (it is never longer than a stable step), and
@@ -221,112 +285,160 @@ double advance_to(State& s, const Deck& deck, double until_s, double max_step_s)
     s.time_s = last ? until_s : s.time_s + max_step_s;
     ++s.moisture_steps;
     if (split) max_step_s = std::min(max_step_s, coupling_step_limit(s, deck));  // smaller nodes
+    if (pause && pause()) break;
   }
   return max_step_s;
 }
 
 int run(const RunOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
-  const Deck deck = load_deck(opt.deck_path, opt.overrides);
+  const InterruptWatch interrupts;  // SIGINT, SIGTERM: a checkpoint after the coupling step under way
+  const bool restart = !opt.restart_path.empty();
+  const Checkpoint checkpoint = restart ? read_checkpoint_file(opt.restart_path) : Checkpoint{};
+  const Deck deck = restart ? checkpoint_deck(checkpoint, opt.restart_path, opt.deck_path, opt.overrides)
+                            : load_deck(opt.deck_path, opt.overrides);
+  const std::string deck_text = restart ? checkpoint_deck_text(checkpoint) : resolved_deck_text(deck);
   Progress progress;  // wall time counts the set-up too: it holds the initial equilibrium
   progress.start(deck.end_time_s, opt.quiet, opt.progress_every_s);
-  State state = setup_state(deck);
-  const std::string outdir = opt.outdir.empty() ? "runs/" + deck.name : opt.outdir;
-  prepare_output_dir(outdir, opt.force);
-  write_file_atomically(outdir + "/deck.toml", resolved_deck_text(deck));
-
-  Log log;
-  log.open(outdir + "/log.txt", opt.quiet);
-  std::ostringstream head;
-  head << "ydry " << YDRY_VERSION << " (" << YDRY_COMMIT << "), deck " << deck.path << ", "
-       << omp_get_max_threads() << " threads\n"
-       << "mesh: " << state.triangles.size() << " triangles, " << state.joints.size() << " joints, "
-       << state.moisture.size() << " moisture nodes";
-  log.info(head.str());
-  std::vector<std::uint8_t> material_used(state.material_names.size(), 0);
-  for (const std::uint16_t m : state.triangles.material) material_used[m] = 1;
-  for (std::size_t m = 0; m < material_used.size(); ++m)
-    if (!material_used[m])
-      log.warning("[materials." + state.material_names[m] + "] is not used by any triangle of the mesh");
-  if (deck.mechanics)
-    for (std::size_t m = 0; m < state.materials.size(); ++m)
-      if (state.materials[m].strength_heterogeneity > 0.0) log.info(strength_factor_line(state, m, deck.seed));
-  double max_step = coupling_step_limit(state, deck);
-  std::ostringstream steps;
-  steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";
-  if (deck.mechanics)
-    steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
-          << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
-          << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
-          << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
-          << " steps, residual " << state.mechanics.last_residual << "; contact penalty "
-          << state.contact.penalty_pa << " Pa, damping " << state.contact.damping_ratio << " of critical, "
-          << state.contact.surface_edge.size() << " surface edges"
-          << (deck.dynamic ? "; dynamic: the solid moves in real time" : "");
-  log.info(steps.str() + "; output to " + outdir);
+  State state = restart ? state_from_checkpoint(deck, checkpoint) : setup_state(deck);
+  RunRecord record = restart ? checkpoint_record(checkpoint, deck, state) : RunRecord{};
+  progress.start_time_s = state.time_s;
+  const std::string outdir = !opt.outdir.empty() ? opt.outdir
+                             : restart           ? run_folder_of(opt.restart_path)
+                                                 : "runs/" + deck.name;
+  if (restart)
+    resume_output_dir(outdir, deck_text);
+  else
+    prepare_output_dir(outdir, opt.force);
 
   FrameSeries frames{outdir, deck.name, {}, {}};
-  Series series;
+  if (restart) resume_frame_series(frames, record.frame_times);  // before anything is written
+  write_file_atomically(outdir + "/deck.toml", deck_text);
+  Log log;
+  log.open(outdir + "/log.txt", opt.quiet, restart);
+  if (restart) {
+    std::ostringstream line;
+    line << "ydry " << YDRY_VERSION << " (" << YDRY_COMMIT << "), " << omp_get_max_threads()
+         << " threads: restart from " << opt.restart_path << " at t = " << state.time_s << " s (coupling step "
+         << state.moisture_steps << "); output to " << outdir;
+    log.info(line.str());
+    const std::string version = std::string(YDRY_VERSION) + " (" + YDRY_COMMIT + ")";
+    if (checkpoint.ydry_version != version)
+      log.warning("the checkpoint was written by ydry " + checkpoint.ydry_version + ", this is " + version +
+                  ": the run may not go on as it would have");
+  } else {
+    record.max_step_s = coupling_step_limit(state, deck);
+    log_set_up(log, state, deck, record.max_step_s, outdir);
+  }
+
   const std::vector<index_t> right_end = deck.mechanics ? right_end_corners(state) : std::vector<index_t>{};
-  std::ostringstream reactions;
-  reactions << "time_s,boundary,reaction_x_N,reaction_y_N,mean_ux_m,mean_uy_m,work_J\n";
-  CracksCsv cracks_csv{outdir + "/cracks.csv", {}};
+  if (!restart) record.reactions_csv = "time_s,boundary,reaction_x_N,reaction_y_N,mean_ux_m,mean_uy_m,work_J\n";
+  CracksCsv cracks_csv{outdir + "/cracks.csv", record.cracks_rows};
   // surface.csv profiles the boundary named "top" (the soil's free surface) at every frame.
   const auto top = state.boundary_edges.find("top");
   const bool surface = deck.mechanics && top != state.boundary_edges.end();
-  if (deck.mechanics && !surface) log.info("no surface.csv: the mesh has no boundary named \"top\"");
-  SurfaceCsv surface_csv{outdir + "/surface.csv", {}};
-  std::uint64_t capped_reported = 0;
-  long next_frame = 0;
+  if (deck.mechanics && !surface && !restart) log.info("no surface.csv: the mesh has no boundary named \"top\"");
+  SurfaceCsv surface_csv{outdir + "/surface.csv", record.surface_rows};
+  const auto write_summary = [&](bool completed) {
+    write_file_atomically(outdir + "/summary.json",
+                          summary_json(deck, state, record.series, progress.wall_s(), completed).dump());
+  };
   const auto write_outputs = [&](bool completed) {
-    if (state.time_s >= next_frame * deck.output_interval_s * (1.0 - 1e-12) || completed) {
+    if (state.time_s >= double(record.next_frame) * deck.output_interval_s * (1.0 - 1e-12) || completed) {
       write_frame(frames, state, state.time_s);
       if (surface) append_surface_csv(surface_csv, state.time_s, surface_profile(state, top->second));
-      next_frame = std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12))) + 1;
+      record.next_frame = std::uint64_t(std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12)))) + 1;
     }
     const std::vector<Crack> cracks =
         deck.mechanics ? find_cracks(state, deck.crack_width_threshold_m) : std::vector<Crack>{};
-    series.rows.push_back(series_row(state, deck, right_end, cracks));
-    write_series_csv(outdir + "/series.csv", series);
+    record.series.rows.push_back(series_row(state, deck, right_end, cracks));
+    write_series_csv(outdir + "/series.csv", record.series);
     if (deck.mechanics) {
-      append_reactions(reactions, state);
-      write_file_atomically(outdir + "/reactions.csv", reactions.str());
+      append_reactions(record.reactions_csv, state);
+      write_file_atomically(outdir + "/reactions.csv", record.reactions_csv);
       append_cracks_csv(cracks_csv, state.time_s, cracks);
-      if (state.mechanics.capped_relaxations > capped_reported) {
+      if (state.mechanics.capped_relaxations > record.capped_reported) {
         std::ostringstream w;
-        w << state.mechanics.capped_relaxations - capped_reported << " relaxation(s) up to t = " << state.time_s
+        w << state.mechanics.capped_relaxations - record.capped_reported << " relaxation(s) up to t = " << state.time_s
           << " s stopped at the step cap (solver.relaxation_max_steps = " << deck.relaxation_max_steps
           << ") above the tolerance; last residual " << state.mechanics.last_residual;
         log.warning(w.str());
-        capped_reported = state.mechanics.capped_relaxations;
+        record.capped_reported = state.mechanics.capped_relaxations;
       }
     }
-    write_file_atomically(outdir + "/summary.json",
-                          summary_json(deck, state, series, progress.wall_s(), completed).dump());
+    write_summary(completed);
+  };
+  if (restart) {  // the files as they were when the checkpoint was written
+    write_series_csv(outdir + "/series.csv", record.series);
+    if (deck.mechanics) {
+      write_file_atomically(outdir + "/reactions.csv", record.reactions_csv);
+      write_cracks_csv(cracks_csv);
+    }
+    if (surface) write_surface_csv(surface_csv);
+    write_summary(record.finished);
+  } else {
+    write_outputs(false);
+  }
+
+  // Checkpoints: every checkpoint_every_steps coupling steps or checkpoint_every_s of wall time.
+  std::uint64_t checkpoint_steps = state.moisture_steps;
+  double checkpoint_wall_s = progress.wall_s();
+  const auto checkpoint_due = [&] {
+    return (opt.checkpoint_every_steps > 0 && state.moisture_steps >= checkpoint_steps + opt.checkpoint_every_steps) ||
+           (opt.checkpoint_every_s > 0 && progress.wall_s() >= checkpoint_wall_s + opt.checkpoint_every_s);
+  };
+  const auto write_checkpoint = [&] {
+    record.frame_times = frames.times;
+    record.cracks_rows = cracks_csv.rows;
+    record.surface_rows = surface_csv.rows;
+    const std::string path = checkpoint_path(outdir, deck.name, state.moisture_steps);
+    std::filesystem::create_directories(outdir + "/checkpoints");
+    write_file_atomically(path, checkpoint_bytes(deck, deck_text, state, record));
+    checkpoint_steps = state.moisture_steps;
+    checkpoint_wall_s = progress.wall_s();
+    return path;
   };
 
-  write_outputs(false);
   // Rows of the tables every series_interval, frames at the first row at or after each
   // multiple of output_interval.
   try {
-    for (long row = 1; state.time_s < deck.end_time_s; ++row) {
-      const double next_output = std::min(deck.end_time_s, row * deck.series_interval_s);
+    while (!record.finished) {
+      const double next_output = std::min(deck.end_time_s, double(record.row) * deck.series_interval_s);
       while (state.time_s < next_output) {
-        // Advance in chunks so the progress line stays live on long intervals.
-        max_step = advance_to(state, deck, std::min(next_output, state.time_s + 1000 * max_step), max_step);
+        // Advance in chunks so the progress line stays live on long intervals. A chunk that a
+        // checkpoint cut is continued to its end, where the solid relaxes, as it would have been.
+        if (!(record.chunk_until_s > state.time_s))
+          record.chunk_until_s = std::min(next_output, state.time_s + 1000 * record.max_step_s);
+        record.max_step_s = advance_to(state, deck, record.chunk_until_s, record.max_step_s,
+                                       [&] { return interrupt_signal() != 0 || checkpoint_due(); });
         progress.update(state.time_s, state.moisture_steps);
+        if (interrupt_signal() != 0) {
+          const std::string path = write_checkpoint();
+          progress.finish(state.time_s, state.moisture_steps);
+          std::ostringstream w;
+          w << (interrupt_signal() == SIGINT ? "SIGINT" : "SIGTERM") << " at t = " << state.time_s
+            << " s: stopped after coupling step " << state.moisture_steps << ", checkpoint " << path
+            << "; the frames and rows up to t = " << record.series.rows.back()[0]
+            << " s are written; continue with: ydry --restart " << path;
+          log.warning(w.str());
+          return 130;
+        }
+        if (checkpoint_due()) write_checkpoint();
       }
       write_outputs(state.time_s >= deck.end_time_s);
+      record.finished = state.time_s >= deck.end_time_s;
+      ++record.row;
     }
   } catch (const NumericalFailure& failure) {
     // The state as it failed, for inspection: a last frame and a row, summary completed = false.
     progress.finish(state.time_s, state.moisture_steps);
     log.warning(std::string(failure.what()) + "; the state as it failed is the last frame of " + outdir + "/" +
                 deck.name + ".pvd");
-    next_frame = 0;
+    record.next_frame = 0;
     write_outputs(false);
     return 3;
   }
+  const std::string final_checkpoint = write_checkpoint();
   progress.finish(state.time_s, state.moisture_steps);
 
   std::ostringstream tail;
@@ -344,7 +456,7 @@ int run(const RunOptions& opt) {
   tail
        << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, "
        << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << (surface ? "surface.csv, " : "")
-       << "summary.json, deck.toml, log.txt";
+       << "summary.json, deck.toml, log.txt, " << final_checkpoint;
   log.info(tail.str());
   return 0;
 }

@@ -1,9 +1,12 @@
 // The coupling driver: the paper's staggered loop (section 3.3) and the run's outputs.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "ycore/checkpoint_file.h"
 #include "ycore/deck.h"
 #include "ycore/state.h"
 
@@ -17,6 +20,9 @@ struct RunOptions {
   bool force = false;
   bool quiet = false;
   double progress_every_s = 10.0;      // plain progress lines when stderr is not a terminal
+  std::string restart_path;            // a checkpoint to continue; deck_path may then be empty
+  double checkpoint_every_s = 0;       // wall seconds between checkpoints; 0: none
+  std::uint64_t checkpoint_every_steps = 0;  // coupling steps between checkpoints; 0: none
 };
 
 // Everything a run needs before its first step: mesh, exploded state, pre-existing cracks,
@@ -29,10 +35,16 @@ State setup_state(const Deck& deck);
 // and the mesh, and sizes the steps.
 State prepare_state(const Deck& deck);
 
+// The state a checkpoint holds, on the set-up of `deck` (the checkpoint's): prepare_state, the
+// broken joints, the moisture nodes and contact surfaces they make, and the rest of the state
+// (ycore/checkpoint.h). Throws InputError for a checkpoint that does not fit the deck and mesh.
+State state_from_checkpoint(const Deck& deck, const Checkpoint& checkpoint);
+
 // `ydry check DECK`: reads the deck (with its --set overrides) and the mesh, checks them as
 // a run would, prints the resolved deck (every value, defaults included) on stdout and a
 // line with the mesh's sizes and steps on stderr, without running. Returns 0; bad input
-// throws InputError like run().
+// throws InputError like run(). `ydry check --restart CHECKPOINT` reads the checkpoint and
+// restores its state as a restart would, and prints its deck.toml and a line on its time.
 int check(const RunOptions& options);
 
 // The longest step of the staggered loop: the moisture stability limit, solver.max_coupling_step
@@ -48,10 +60,15 @@ bool coupling_step(State& state, const Deck& deck, double dt, bool relax_now);
 
 // Advances the state to until_s in coupling steps no longer than max_step_s, landing
 // exactly on until_s. Returns the step limit to go on with: lower than max_step_s when a
-// split of the moisture nodes made the moisture stability limit smaller.
-double advance_to(State& state, const Deck& deck, double until_s, double max_step_s);
+// split of the moisture nodes made the moisture stability limit smaller. Stops early, after a
+// whole coupling step, when `pause` returns true; called again with the same until_s and the
+// limit it returned, it goes on as if it had not stopped.
+double advance_to(State& state, const Deck& deck, double until_s, double max_step_s,
+                  const std::function<bool()>& pause = nullptr);
 
-// Runs a deck end to end with outputs; returns the process exit code.
+// Runs a deck end to end with outputs, or continues the run of options.restart_path; writes
+// checkpoints on request, at the end, and on SIGINT or SIGTERM (then returns 130). Returns
+// the process exit code.
 int run(const RunOptions& options);
 
 }  // namespace ydry

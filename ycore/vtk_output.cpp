@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 
+#include "ycore/input_error.h"
 #include "ycore/joint_law.h"
 #include "ycore/output_files.h"
 
@@ -175,6 +176,26 @@ void write_frame(FrameSeries& series, const State& state, double time_s) {
   series.times.push_back(time_s);
   series.files.push_back(relative);
   write_file_atomically(series.outdir + "/" + series.name + ".pvd", pvd_text(series));
+}
+
+void resume_frame_series(FrameSeries& series, const std::vector<double>& times) {
+  namespace fs = std::filesystem;
+  const auto path = [&](const char* part, std::size_t index) {
+    return fs::path(series.outdir) / frame_file(series.name, part, index);
+  };
+  series.times = times;
+  series.files.clear();
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    for (const char* part : {"", "_cracks"})
+      if (!fs::is_regular_file(path(part, i)))
+        throw InputError(path(part, i).string() + ": a frame the checkpoint lists is missing (a restart writes into "
+                                                  "the run's own output folder)");
+    series.files.push_back(frame_file(series.name, "", i));
+  }
+  // The .pvd first: at no moment does it list a frame that is not there.
+  write_file_atomically(series.outdir + "/" + series.name + ".pvd", pvd_text(series));
+  for (std::size_t i = times.size(); fs::exists(path("", i)) || fs::exists(path("_cracks", i)); ++i)
+    for (const char* part : {"", "_cracks"}) fs::remove(path(part, i));
 }
 
 }  // namespace ydry

@@ -23,4 +23,9 @@ struct FrameSeries {
 // NaN without moisture) and rewrites NAME.pvd, which lists both per frame as parts 0 and 1.
 void write_frame(FrameSeries& series, const State& state, double time_s);
 
+// A restarted run's frames: those at `times` (a checkpoint's list), whose files must be in the
+// folder (InputError otherwise). Frames numbered after them, which a later state of the run
+// wrote, are removed, and NAME.pvd is rewritten to list these only.
+void resume_frame_series(FrameSeries& series, const std::vector<double>& times);
+
 }  // namespace ydry

@@ -11,6 +11,10 @@ void append_cracks_csv(CracksCsv& csv, double time_s, const std::vector<Crack>& 
                 format_double(c.width_m) + "," + format_double(c.length_m) + "," +
                 (c.penetrating ? "1" : "0") + "," + (c.on_outer_surface ? "1" : "0") + "\n";
   }
+  write_cracks_csv(csv);
+}
+
+void write_cracks_csv(const CracksCsv& csv) {
   write_file_atomically(csv.path, "time_s,crack_id,x_m,width_m,length_m,penetrating,surface\n" + csv.rows);
 }
 

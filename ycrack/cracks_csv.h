@@ -17,4 +17,7 @@ struct CracksCsv {
 // orders by x) and rewrites the whole file atomically, header first.
 void append_cracks_csv(CracksCsv& csv, double time_s, const std::vector<Crack>& cracks);
 
+// Writes the file with the rows so far (a restart's).
+void write_cracks_csv(const CracksCsv& csv);
+
 }  // namespace ydry

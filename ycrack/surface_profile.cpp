@@ -65,6 +65,10 @@ void append_surface_csv(SurfaceCsv& csv, double time_s, const std::vector<Surfac
   for (const SurfacePoint& p : points)
     csv.rows += format_double(time_s) + "," + format_double(p.x0_m) + "," + format_double(p.y0_m) + "," +
                 format_double(p.ux_m) + "," + format_double(p.uy_m) + "," + std::to_string(p.segment) + "\n";
+  write_surface_csv(csv);
+}
+
+void write_surface_csv(const SurfaceCsv& csv) {
   write_file_atomically(csv.path, "time_s,x0_m,y0_m,ux_m,uy_m,segment\n" + csv.rows);
 }
 

@@ -32,4 +32,7 @@ struct SurfaceCsv {
 // time_s, x0_m, y0_m, ux_m, uy_m, segment.
 void append_surface_csv(SurfaceCsv& csv, double time_s, const std::vector<SurfacePoint>& points);
 
+// Writes the file with the rows so far (a restart's).
+void write_surface_csv(const SurfaceCsv& csv);
+
 }  // namespace ydry
