@@ -3,11 +3,12 @@
 
 Each entry of a sweep is one run, `ydry DECK -o OUT/NAME_VALUE --force --quiet --set ...`, in its
 own folder. Runs whose summary.json says `completed` (and whose deck.toml is the deck this
-sweep would run now) are skipped, an unfinished one starts again, so the same command resumes
-a sweep after an interruption; entries that resolve to the same deck share one run. Ctrl-C (or
-SIGTERM) stops the ydry processes, waits for them and exits 130. Writes OUT/sweep.json (the
-sweeps and their run folders, read by scripts/plot_sweep.py) and OUT/sweep.slurm (the same runs
-as a SLURM job array: one array task per run).
+sweep would run now) are skipped, an unfinished one goes on from its newest checkpoint
+(`ydry --restart`), so the same command resumes a sweep after an interruption; entries that
+resolve to the same deck share one run. Ctrl-C (or SIGTERM) makes every running ydry end its
+coupling step and write a checkpoint (Ctrl-C again: at once), waits for them and exits 130.
+Writes OUT/sweep.json (the sweeps and their run folders, read by scripts/plot_sweep.py) and
+OUT/sweep.slurm (the same runs as a SLURM job array: one array task per run).
 
     scripts/sweep.py inputs/sweeps/young.toml --out runs/sweeps --jobs 2
     scripts/sweep.py inputs/sweeps/*.toml --out runs/sweeps --jobs 2     # the paper's three sweeps
@@ -55,7 +56,7 @@ REPO = ydry_case.REPO
 CRACK_KINDS = ("surface", "penetrating")
 FILE_KEYS = {"name", "deck", "parameter", "axis", "unit", "scale", "cracks", "figures", "set", "values",
              "entries"}
-STOP_WAIT_S = 10.0   # after SIGTERM, how long a ydry process may take to end before SIGKILL
+STOP_WAIT_S = 300.0  # after SIGTERM, how long a ydry may take to end its coupling step before SIGKILL
 
 
 class SweepError(Exception):
@@ -77,6 +78,9 @@ def arguments():
     parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
     parser.add_argument("--progress-every", type=float, default=30.0, metavar="SECONDS",
                         help="seconds between progress lines (default 30)")
+    parser.add_argument("--checkpoint-every", type=float, default=1800.0, metavar="SECONDS",
+                        help="wall seconds between the checkpoints of a run (default 1800; 0: only at its end "
+                             "and when stopped)")
     parser.add_argument("--slurm-only", action="store_true", help="write sweep.json and sweep.slurm, run nothing")
     parser.add_argument("--slurm-cpus", type=int, help="cpus-per-task of sweep.slurm (default: the threads of a run)")
     parser.add_argument("--slurm-time", default="12:00:00", help="time limit of an array task (default 12:00:00)")
@@ -243,34 +247,45 @@ def plan_runs(sweeps, out, ydry, extra):
 
 
 def run_state(run):
-    """completed | changed (completed, but with another deck) | unfinished | new."""
+    """new | completed | unfinished (this deck's run, not at its end) | changed (the folder holds
+    the run of another deck, or something else)."""
     summary, deck = run["path"] / "summary.json", run["path"] / "deck.toml"
-    if not summary.is_file():
-        return "unfinished" if run["path"].exists() else "new"
+    if not run["path"].exists():
+        return "new"
+    if not deck.is_file():
+        return "unfinished"  # stopped before its first output, or never a ydry run: no checkpoint
     try:
-        completed = json.loads(summary.read_text()).get("completed") is True
-    except json.JSONDecodeError:
-        return "unfinished"
-    if not completed:
-        return "unfinished"
-    same = deck.is_file() and deck_key(deck.read_text()) == run["deck_key"]
-    return "completed" if same else "changed"
+        if deck_key(deck.read_text()) != run["deck_key"]:
+            return "changed"
+        completed = summary.is_file() and json.loads(summary.read_text()).get("completed") is True
+    except (tomllib.TOMLDecodeError, json.JSONDecodeError):
+        return "changed"
+    return "completed" if completed else "unfinished"
 
 
-def resume_arguments(folder):
-    """How ydry takes up a run whose folder holds an unfinished run (or nothing yet): the
-    arguments besides the deck, -o and the overrides. ydry has no restart from a checkpoint, so
-    the run starts again from t = 0 and --force lets it replace what the folder holds. The
-    local runner and the SLURM script both take this choice, and it is the one place to change
-    when runs can restart from their newest checkpoint."""
-    return ["--force"]
+def newest_checkpoint(folder):
+    """The checkpoint of the most coupling steps in FOLDER/checkpoints (NAME_NNNNNN.chk, NNNNNN
+    the steps done), or None."""
+    found = [(int(match.group(1)), path) for path in (folder / "checkpoints").glob("*.chk")
+             if (match := re.search(r"_(\d+)\.chk$", path.name))]
+    return max(found)[1] if found else None
 
 
-def ydry_arguments(ydry, run):
-    """The ydry command of a run, the same locally and in the SLURM script (which runs from the
-    repository root)."""
+def resume_arguments(run, state):
+    """How ydry takes up a run: an unfinished run of this deck goes on from its newest checkpoint
+    (`--restart`: ydry takes the folder's files back to it, and refuses a deck that is not the
+    checkpoint's); any other run starts at t = 0, `--force` letting it replace what the folder
+    holds. The SLURM script makes the same choice in bash (write_slurm)."""
+    checkpoint = newest_checkpoint(run["path"]) if state == "unfinished" else None
+    return ["--restart", shown(checkpoint)] if checkpoint else ["--force"]
+
+
+def run_arguments(run, checkpoint_every):
+    """The ydry arguments of a run but the resume ones: deck, folder, overrides. ydry writes a
+    checkpoint every checkpoint_every seconds of wall time (0: only at the end and when stopped)."""
     sets = [arg for override in run["overrides"] for arg in ("--set", override)]
-    return [shown(ydry), run["deck"], "-o", shown(run["path"]), *resume_arguments(run["path"]), "--quiet", *sets]
+    every = ["--checkpoint-every", f"{checkpoint_every:g}"] if checkpoint_every > 0 else []
+    return [run["deck"], "-o", shown(run["path"]), "--quiet", *every, *sets]
 
 
 # ---- the files of a sweep --------------------------------------------------------------
@@ -286,16 +301,19 @@ def write_manifest(out, sweeps):
     return path
 
 
-def write_slurm(out, runs, ydry, cpus, time_limit):
+def write_slurm(out, runs, ydry, checkpoint_every, cpus, time_limit):
     """OUT/sweep.slurm: a SLURM job array, one task per run, each the local runner's ydry command
-    (paths relative to the repository root: submit from it), skipped when completed."""
-    cases = "\n".join(f"  {k}) out={shlex.quote(shown(run['path']))}\n     args=({shlex.join(ydry_arguments(ydry, run))}) ;;"
-                      for k, run in enumerate(runs))
+    (paths relative to the repository root: submit from it); a completed run is skipped, an
+    unfinished one restarts from its newest checkpoint (resume_arguments)."""
+    cases = "\n".join(f"  {k}) out={shlex.quote(shown(run['path']))}\n"
+                      f"     args=({shlex.join(run_arguments(run, checkpoint_every))}) ;;" for k, run in enumerate(runs))
     text = f"""#!/bin/bash
 # ydry sweep of {len(runs)} runs into {shown(out)}, written by scripts/sweep.py: one array task per
 # run. Submit from the repository root (the paths are relative to it), after building ydry:
 #   sbatch {shown(out)}/sweep.slurm
-# A task whose run already completed (summary.json) does nothing. Test one task without SLURM:
+# A task whose run completed (summary.json) does nothing; one whose run was stopped goes on
+# from its newest checkpoint (ydry refuses it if the deck changed since: remove the folder).
+# Test one task without SLURM:
 #   SLURM_ARRAY_TASK_ID=0 bash {shown(out)}/sweep.slurm
 #SBATCH --job-name=ydry-sweep
 #SBATCH --array=0-{len(runs) - 1}
@@ -313,7 +331,15 @@ if grep -qs '"completed": true' "$out/summary.json"; then
   echo "$out: completed earlier, skipped"
   exit 0
 fi
-exec "${{args[@]}}"
+resume=(--force)  # the newest checkpoint, of the most coupling steps (NAME_NNNNNN.chk), if any
+steps=-1
+for checkpoint in "$out"/checkpoints/*.chk; do
+  [ -e "$checkpoint" ] || continue
+  n="${{checkpoint##*_}}"
+  n="${{n%.chk}}"
+  if [ "$((10#$n))" -gt "$steps" ]; then steps="$((10#$n))"; resume=(--restart "$checkpoint"); fi
+done
+exec {shlex.quote(shown(ydry))} "${{resume[@]}}" "${{args[@]}}"
 """
     path = out / "sweep.slurm"
     path.write_text(text)
@@ -345,16 +371,23 @@ def progress_line(done, running, left, start):
 
 
 def stop(running):
-    """SIGTERM to every running ydry, SIGKILL to any still there after STOP_WAIT_S; waits for all."""
+    """SIGTERM to every running ydry: each ends its coupling step, writes a checkpoint and exits.
+    A second Ctrl-C (or SIGTERM) passes a second SIGTERM on, which ends them at once, their files
+    whole; any still there after STOP_WAIT_S is killed. Returns when all have ended."""
     for run in running:
         run["process"].terminate()
+    print(f"sweep: waiting for {len(running)} ydry to write a checkpoint (Ctrl-C again: stop at once)", flush=True)
     deadline = time.monotonic() + STOP_WAIT_S
-    for run in running:
+    while any(run["process"].poll() is None for run in running):
         try:
-            run["process"].wait(max(0.0, deadline - time.monotonic()))
-        except subprocess.TimeoutExpired:
-            run["process"].kill()
-            run["process"].wait()
+            time.sleep(0.1)
+            if time.monotonic() > deadline:
+                for run in running:
+                    run["process"].kill()
+        except KeyboardInterrupt:
+            for run in running:
+                if run["process"].poll() is None:
+                    run["process"].terminate()
 
 
 def finished(run, logs):
@@ -367,9 +400,9 @@ def finished(run, logs):
     return f"FAILED  {run['folder']} (ydry exit {rc}) after {wall:.0f} s:\n  " + "\n  ".join(tail)
 
 
-def run_all(todo, ydry, out, jobs, threads, every):
-    """Runs todo, `jobs` at a time, printing progress; returns the runs that failed. Ctrl-C or
-    SIGTERM stops the running ones and raises KeyboardInterrupt."""
+def run_all(todo, out, jobs, threads, every):
+    """Runs the commands of todo, `jobs` at a time, printing progress; returns the runs that
+    failed. Ctrl-C or SIGTERM stops the running ones and raises KeyboardInterrupt."""
     logs = out / "logs"
     logs.mkdir(exist_ok=True)
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
@@ -379,8 +412,8 @@ def run_all(todo, ydry, out, jobs, threads, every):
         while left or running:
             while left and len(running) < jobs:
                 run = left.pop(0)
-                with open(logs / f"{run['folder']}.txt", "w") as log:
-                    run["process"] = subprocess.Popen(ydry_arguments(ydry, run), cwd=REPO, env=env, stdin=subprocess.DEVNULL,
+                with open(logs / f"{run['folder']}.txt", "a") as log:
+                    run["process"] = subprocess.Popen(run["command"], cwd=REPO, env=env, stdin=subprocess.DEVNULL,
                                                       stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
                 run["started"] = time.monotonic()
                 running.append(run)
@@ -400,6 +433,16 @@ def run_all(todo, ydry, out, jobs, threads, every):
     return failed
 
 
+def plan_note(run, state):
+    """What the sweep does with a run, as the plan it prints says."""
+    command = run.get("command", [])
+    if state == "unfinished":
+        return (f"unfinished: restart from {Path(command[command.index('--restart') + 1]).name}"
+                if "--restart" in command else "unfinished, no checkpoint: run again from the start")
+    return {"completed": "skipped (completed)", "new": "to run",
+            "changed": "holds another deck's run: run again from the start"}[state]
+
+
 def interrupt(signum, frame):
     raise KeyboardInterrupt
 
@@ -416,17 +459,19 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     threads = args.threads or max(1, len(os.sched_getaffinity(0)) // args.jobs)
     write_manifest(out, sweeps)
-    slurm = write_slurm(out, runs, args.ydry.resolve(), args.slurm_cpus or threads, args.slurm_time)
+    slurm = write_slurm(out, runs, args.ydry.resolve(), args.checkpoint_every, args.slurm_cpus or threads,
+                        args.slurm_time)
     states = {run["folder"]: run_state(run) for run in runs}
     todo = [run for run in runs if states[run["folder"]] != "completed"]
+    for run in todo:
+        run["command"] = [shown(args.ydry.resolve()), *resume_arguments(run, states[run["folder"]]),
+                          *run_arguments(run, args.checkpoint_every)]
     entries = sum(len(sweep["entries"]) for sweep in sweeps)
     print(f"sweep: {len(runs)} runs for {entries} values into {shown(out)} ({slurm.name} written); "
           f"{len(runs) - len(todo)} completed earlier, {len(todo)} to run, {args.jobs} at a time, "
           f"{threads} thread(s) each")
     for run in runs:
-        note = {"completed": "skipped (completed)", "changed": "completed with another deck: run again",
-                "unfinished": "unfinished: run again", "new": "to run"}[states[run["folder"]]]
-        print(f"  {run['folder']}: {note}")
+        print(f"  {run['folder']}: {plan_note(run, states[run['folder']])}")
     for entry, run in shared:
         print(f"  {entry}: the deck of {run}, shares its run")
     if args.slurm_only:
@@ -434,7 +479,7 @@ def main():
     for signum in (signal.SIGINT, signal.SIGTERM):  # SIGINT too where a shell started sweep.py ignoring it
         signal.signal(signum, interrupt)
     try:
-        failed = run_all(todo, args.ydry.resolve(), out, args.jobs, threads, args.progress_every)
+        failed = run_all(todo, out, args.jobs, threads, args.progress_every)
     except KeyboardInterrupt:
         print("sweep: stopped; run the same command again to resume")
         return 130

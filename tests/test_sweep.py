@@ -1,15 +1,18 @@
 #!/usr/bin/python3
-"""ctest sweep: scripts/sweep.py skips completed runs, resumes an interrupted one, stops its
-ydry processes on SIGINT, and writes a SLURM script whose task body runs one run.
+"""ctest sweep: scripts/sweep.py skips completed runs, stops its ydry processes on SIGINT (each
+writing a checkpoint), resumes the interrupted ones from their checkpoints, and writes a SLURM
+script whose task body runs, or restarts, one run.
 
-A sweep file over run.end_time = 1000, 2000 and 20000 s of tests/data/sweep_strip.toml (a few
-seconds of CPU each), one run at a time:
-1. SIGINT while the 20000 s run is under way: sweep.py exits 130, no ydry process of the sweep
-   is left, the first two runs are completed and the third is not;
-2. the same command again: the first two are skipped (their summary.json untouched), the third
-   runs again and completes;
-3. run 1's folder removed, the body of OUT/sweep.slurm run with bash and SLURM_ARRAY_TASK_ID=1:
-   it makes run 1 again (end time 2000 s) and touches no other run.
+A sweep file over run.end_time = 1000, 2000, 10000 and 16000 s of tests/data/sweep_strip.toml
+(seconds of CPU each), two runs at a time:
+1. SIGINT while the last two runs are under way: sweep.py exits 130, no ydry process of the
+   sweep is left, the first two runs are completed, the last two are not and hold a checkpoint;
+2. the body of OUT/sweep.slurm, run with bash and SLURM_ARRAY_TASK_ID=3: run 3 goes on from
+   its checkpoint (its log.txt says so) to its end, and no other run changes;
+3. the same sweep.py command again: runs 0, 1 and 3 are skipped (their summary.json untouched),
+   run 2 goes on from its checkpoint to its end;
+4. run 1's folder removed, the SLURM task body for index 1: it makes run 1 again from the start
+   (end time 2000 s) and touches no other run.
 And the shipped sweeps, inputs/sweeps/*.toml, planned without running (--slurm-only: every
 deck and override checked by ydry): 8 runs for their 9 values (E = 4 MPa and alpha = 0.08 are
 one). Exits 1 on any failure.
@@ -29,7 +32,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "verification"))
 import ydry_case  # noqa: E402  (test_arguments, failed)
 
-END_TIMES = [1000, 2000, 20000]
+END_TIMES = [1000, 2000, 10000, 16000]
 SWEEP_FILE = f"""name = "strip"
 deck = "{REPO}/tests/data/sweep_strip.toml"
 parameter = "run.end_time"
@@ -71,6 +74,35 @@ def last_row_time(folder):
         return 0.0
 
 
+def stamp(runs):
+    return [(run / "summary.json").stat().st_mtime_ns for run in runs]
+
+
+def finished(run, end_time, restarted):
+    """Failures unless the run completed at end_time, restarted from a checkpoint or not."""
+    facts = summary(run)
+    failures = [] if facts.get("completed") is True and facts.get("time_s") == end_time else \
+        [f"{run.name} ended at {facts.get('time_s')} s, completed {facts.get('completed')}"]
+    if ("restart from" in (run / "log.txt").read_text()) != restarted:
+        failures.append(f"{run.name}: {'no' if restarted else 'a'} restart in its log.txt")
+    return failures
+
+
+def slurm_task(out, runs, index):
+    """Runs the SLURM script's body for one index without SLURM; failures unless that run
+    completes (restarted when it held a checkpoint) and no other run changes."""
+    others = [run for k, run in enumerate(runs) if k != index and (run / "summary.json").is_file()]
+    stamps = stamp(others)
+    restart = runs[index].is_dir() and bool(list((runs[index] / "checkpoints").glob("*.chk")))
+    env = {key: value for key, value in os.environ.items() if not key.startswith("SLURM_")}
+    proc = subprocess.run(["bash", str(out / "sweep.slurm")], cwd=REPO, capture_output=True, text=True,
+                          env=dict(env, SLURM_ARRAY_TASK_ID=str(index)))
+    print(proc.stdout + proc.stderr)
+    failures = [] if proc.returncode == 0 else [f"the SLURM task body for {index} exited {proc.returncode}"]
+    failures += finished(runs[index], END_TIMES[index], restart)
+    return failures + ([f"the SLURM task for {index} touched another run"] if stamp(others) != stamps else [])
+
+
 def main():
     args = ydry_case.test_arguments(__doc__)
     failures = []
@@ -79,54 +111,46 @@ def main():
         sweep_file.write_text(SWEEP_FILE)
         runs = [out / f"strip_{t}" for t in END_TIMES]
         command = [sys.executable, str(REPO / "scripts" / "sweep.py"), str(sweep_file), "--out", str(out),
-                   "--jobs", "1", "--threads", "1", "--ydry", str(args.ydry), "--progress-every", "1"]
+                   "--jobs", "2", "--threads", "1", "--ydry", str(args.ydry), "--progress-every", "1"]
 
-        # 1. Interrupted during the last run.
+        # 1. Interrupted during the last two runs.
         proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        if not wait_for(lambda: last_row_time(runs[2]) > 0, 120):
-            failures.append("the 20000 s run never wrote a row")
+        if not wait_for(lambda: last_row_time(runs[2]) > 0 and last_row_time(runs[3]) > 0, 120):
+            failures.append("the last two runs never wrote a row together")
         proc.send_signal(signal.SIGINT)
-        output = proc.communicate(timeout=60)[0]
+        output = proc.communicate(timeout=300)[0]
         print(output)
         if proc.returncode != 130:
             failures.append(f"interrupted sweep.py exited {proc.returncode}, not 130")
         if not wait_for(lambda: not ydry_processes(tmp), 5):
             failures.append(f"ydry processes left after the interrupt: {ydry_processes(tmp)}")
         done = [summary(run).get("completed") is True for run in runs]
-        if done != [True, True, False]:
-            failures.append(f"after the interrupt, completed runs {done}, expected [True, True, False]")
+        if done != [True, True, False, False]:
+            failures.append(f"after the interrupt, completed runs {done}, expected [True, True, False, False]")
+        if not all(list((run / "checkpoints").glob("*.chk")) for run in runs[2:]):
+            failures.append("an interrupted run holds no checkpoint")
 
-        # 2. Resumed: completed runs skipped, the interrupted one run again to its end.
-        stamps = [(run / "summary.json").stat().st_mtime_ns for run in runs[:2]]
+        # 2. The SLURM task body for index 3: a restart.
+        if f"#SBATCH --array=0-{len(END_TIMES) - 1}" not in (out / "sweep.slurm").read_text():
+            failures.append("sweep.slurm has no array line for the 4 runs")
+        failures += slurm_task(out, runs, 3)
+
+        # 3. Resumed: completed runs skipped, the interrupted one restarted.
+        stamps = stamp(runs[:2] + runs[3:])
         proc = subprocess.run(command, capture_output=True, text=True)
         print(proc.stdout + proc.stderr)
         if proc.returncode != 0:
             failures.append(f"resumed sweep.py exited {proc.returncode}")
-        if proc.stdout.count("skipped (completed)") != 2 or "strip_20000: unfinished: run again" not in proc.stdout:
-            failures.append("the resumed sweep did not announce 2 skipped runs and the unfinished one")
-        if [(run / "summary.json").stat().st_mtime_ns for run in runs[:2]] != stamps:
+        if proc.stdout.count("skipped (completed)") != 3 or "strip_10000: unfinished: restart from" not in proc.stdout:
+            failures.append("the resumed sweep did not announce 3 skipped runs and a restart of the unfinished one")
+        if stamp(runs[:2] + runs[3:]) != stamps:
             failures.append("a completed run was written again on resuming")
-        last = summary(runs[2])
-        if last.get("completed") is not True or last.get("time_s") != END_TIMES[2]:
-            failures.append(f"the resumed run ended at {last.get('time_s')} s, completed {last.get('completed')}")
+        failures += finished(runs[2], END_TIMES[2], restarted=True)
 
-        # 3. The SLURM task body for index 1, without SLURM.
-        slurm = (out / "sweep.slurm").read_text()
-        if f"#SBATCH --array=0-{len(END_TIMES) - 1}" not in slurm:
-            failures.append("sweep.slurm has no array line for the 3 runs")
+        # 4. The SLURM task body for index 1, from the start.
         shutil.rmtree(runs[1])
-        stamps = [(run / "summary.json").stat().st_mtime_ns for run in (runs[0], runs[2])]
-        env = {key: value for key, value in os.environ.items() if not key.startswith("SLURM_")}
-        proc = subprocess.run(["bash", str(out / "sweep.slurm")], cwd=REPO, capture_output=True, text=True,
-                              env=dict(env, SLURM_ARRAY_TASK_ID="1"))
-        print(proc.stdout + proc.stderr)
-        if proc.returncode != 0:
-            failures.append(f"the SLURM task body exited {proc.returncode}")
-        task = summary(runs[1])
-        if task.get("completed") is not True or task.get("time_s") != END_TIMES[1]:
-            failures.append(f"the SLURM task's run ended at {task.get('time_s')} s, completed {task.get('completed')}")
-        if [(run / "summary.json").stat().st_mtime_ns for run in (runs[0], runs[2])] != stamps:
-            failures.append("the SLURM task for index 1 touched another run")
+        failures += slurm_task(out, runs, 1)
+
         # The shipped sweeps.
         shipped = sorted((REPO / "inputs" / "sweeps").glob("*.toml"))
         shipped = [path for path in shipped if "deck" in tomllib.loads(path.read_text())]
