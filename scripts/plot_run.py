@@ -89,7 +89,7 @@ def report(run, folder, figures, skipped):
              "| quantity | value |", "|---|---|",
              f"| end time | {fmt_time(s['time_s'])} |",
              f"| final mean moisture | {s['mean_moisture']:.4f} |",
-             f"| crack count: open on the outer surface / all | {surface_count} / {count} |",
+             f"| crack count: open on the top surface / all | {surface_count} / {count} |",
              f"| mean final crack width: surface cracks / all | {fmt_mm(s['mean_surface_crack_width_m'])} / "
              f"{fmt_mm(s['mean_crack_width_m'])} |",
              f"| total final crack width: surface cracks / all | {fmt_mm(s['total_surface_crack_width_m'])} / "
@@ -100,8 +100,8 @@ def report(run, folder, figures, skipped):
              "", "Definitions:",
              "- crack count and widths: the last row of series.csv (summary.json); a crack counts "
              "when its mouth opening exceeds run.crack_width_threshold; a surface crack has its mouth "
-             "on the mesh's outer boundary (seen from outside), the others rise from an interface "
-             "with another material or are internal.",
+             "on the top surface (the outer boundary facing up: seen from above), the others open "
+             "on the ends, rise from an interface with another material or are internal.",
              f"- right-end displacement: {ux_from}.",
              "- first crack: the first row of series.csv with crack_count >= 1 (resolution: the "
              "series interval).",

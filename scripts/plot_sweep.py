@@ -12,7 +12,7 @@ writes into --out (default OUT/plots), per sweep NAME:
                         length (CSV in s and m; Markdown in min and mm, with the definitions and
                         each quantity's trend with the value)
 
-The cracks counted are the sweep's `cracks`: `surface` (mouth on the outer surface, as seen
+The cracks counted are the sweep's `cracks`: `surface` (mouth on the top surface, as seen
 from above: the Peron sweeps) or `penetrating` (surface cracks that also reach the bottom of
 the layer), from cracks.csv. Runs not yet completed are shown as far as they went, and marked.
 
@@ -34,8 +34,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
 import run_report  # noqa: E402  (load_run, first_crack_time, stabilisation_time)
 import ydry_case  # noqa: E402  (script_parser, last_frame_files)
 
-KIND_TEXT = {"surface": "surface cracks (mouth on the outer surface)",
-             "penetrating": "fully penetrating cracks (from the outer surface to the bottom of the layer)"}
+KIND_TEXT = {"surface": "surface cracks (mouth on the top surface)",
+             "penetrating": "fully penetrating cracks (from the top surface to the bottom of the layer)"}
 QUANTITIES = [  # table column (SI), Markdown heading, factor to its unit
     ("crack_count", "cracks", 1.0),
     ("first_crack_s", "first crack (min)", 1.0 / MINUTE),

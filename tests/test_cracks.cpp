@@ -37,21 +37,26 @@ State rectangle_state() {
   return build_state(mesh, deck);
 }
 
-// Breaks the joints on the vertical line x between heights y_from and y_to; returns how many.
-int break_vertical(State& s, double x, double y_from, double y_to) {
+// Breaks the joints whose two ends lie in the box [x_from, x_to] x [y_from, y_to] (initial
+// positions): a vertical or horizontal line when the box is flat; returns how many.
+int break_within(State& s, double x_from, double x_to, double y_from, double y_to) {
+  const auto inside = [&](index_t c) {
+    return s.nodes.x0[c] >= x_from - 1e-12 && s.nodes.x0[c] <= x_to + 1e-12 && s.nodes.y0[c] >= y_from - 1e-12 &&
+           s.nodes.y0[c] <= y_to + 1e-12;
+  };
   int count = 0;
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     const index_t* n = &s.joints.node[4 * j];
-    const double ylo = std::min(s.nodes.y0[n[0]], s.nodes.y0[n[1]]);
-    const double yhi = std::max(s.nodes.y0[n[0]], s.nodes.y0[n[1]]);
-    if (std::abs(s.nodes.x0[n[0]] - x) < 1e-12 && std::abs(s.nodes.x0[n[1]] - x) < 1e-12 &&
-        ylo >= y_from - 1e-12 && yhi <= y_to + 1e-12) {
+    if (inside(n[0]) && inside(n[1])) {
       s.joints.broken[j] = 1;
       ++count;
     }
   }
   return count;
 }
+
+// Breaks the joints on the vertical line x between heights y_from and y_to; returns how many.
+int break_vertical(State& s, double x, double y_from, double y_to) { return break_within(s, x, x, y_from, y_to); }
 
 // The broken joint with the lowest index: the first line of the cracks frame.
 index_t first_broken(const State& s) {
@@ -228,15 +233,34 @@ TEST_CASE("a crack rising from the interface with a base is measured there and i
 
   const std::vector<Crack> cracks = find_cracks(s, 0.0);
   REQUIRE(cracks.size() == 2);
-  CHECK_FALSE(cracks[0].on_outer_surface);
+  CHECK_FALSE(cracks[0].on_top_surface);
   CHECK(cracks[0].width_m == Approx(100e-6).epsilon(1e-9));  // at its mouth on the interface
-  CHECK(cracks[1].on_outer_surface);
+  CHECK(cracks[1].on_top_surface);
   CHECK(cracks[1].width_m == Approx(60e-6).epsilon(1e-9));
   const CrackSummary sum = summarize_cracks(cracks);
   CHECK(sum.count == 2);
   CHECK(sum.surface_count == 1);
   CHECK(sum.surface_mean_width_m == Approx(60e-6).epsilon(1e-9));
   CHECK(sum.mean_width_m == Approx(80e-6).epsilon(1e-9));
+}
+
+TEST_CASE("a crack opening from the end of a layer is no surface crack: only the top is seen from above", "[crack]") {
+  State s = rectangle_state();
+  // Along y = 10 mm from the left end (x = 0) to x = 10 mm, the upper half lifted by 50 um.
+  REQUIRE(break_within(s, 0.0, 2 * kCell, kHeight / 2, kHeight / 2) == 2);
+  for (index_t t = 0; t < s.triangles.size(); ++t) {
+    const double y = (s.nodes.y0[3 * t] + s.nodes.y0[3 * t + 1] + s.nodes.y0[3 * t + 2]) / 3.0;
+    if (y > kHeight / 2)
+      for (int a = 0; a < 3; ++a) s.nodes.y[corner_node(t, a)] += 50e-6;
+  }
+  const std::vector<Crack> cracks = find_cracks(s, 0.0);
+  REQUIRE(cracks.size() == 1);
+  CHECK_FALSE(cracks[0].on_top_surface);
+  CHECK(cracks[0].x_m == Approx(0.0).margin(1e-12));          // its mouth on the left end
+  CHECK(cracks[0].width_m == Approx(50e-6).epsilon(1e-9));
+  const CrackSummary sum = summarize_cracks(cracks);
+  CHECK(sum.count == 1);
+  CHECK(sum.surface_count == 0);
 }
 
 namespace {

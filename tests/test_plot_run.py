@@ -42,7 +42,7 @@ def main():
             failures.append(f"plot_run.py exited {proc.returncode}")
         failures += [f"{name} not written" for name in FIGURES + ["report.md"] if not (out / name).is_file()]
         if (out / "report.md").is_file():
-            found = re.search(r"^\| crack count: open on the outer surface / all \| (\d+) / (\d+) \|$",
+            found = re.search(r"^\| crack count: open on the top surface / all \| (\d+) / (\d+) \|$",
                               (out / "report.md").read_text(), re.M)
             summary = json.loads((run / "summary.json").read_text())
             expected = (summary["surface_crack_count"], summary["crack_count"])

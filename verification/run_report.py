@@ -88,7 +88,7 @@ def first_crack_time(series, count="crack_count"):
 
 def width_deviation(series, column="mean_surface_crack_width_m"):
     """|mean surface crack width - its value at the last row| / that value, at every row of
-    series.csv (the cracks open on the outer surface: those an observer sees widen); NaN at rows
+    series.csv (the cracks open on the top surface: those an observer sees widen); NaN at rows
     without one, and at every row when the last has none. `column` names the mean width."""
     width = series[column]
     final = width[-1] if width[-1] > 0 else math.nan

@@ -12,12 +12,21 @@ namespace ydry {
 namespace {
 
 // Where a vertex lies, for the choice of a crack's mouth.
-enum SurfaceKind : std::uint8_t { kInside = 0, kInterface = 1, kOuterSurface = 2 };
+enum SurfaceKind : std::uint8_t { kInside = 0, kInterface = 1, kSideSurface = 2, kTopSurface = 3 };
+
+// An outer edge from corner c to the next (counter-clockwise) faces up when its outward normal
+// (dy, -dx) lies within 45 degrees of +y, in the initial configuration: the surface an observer
+// looking down on the sample sees (a layer's top, not its ends or its underside).
+bool faces_up(const Nodes& n, index_t c) {
+  const index_t d = next_corner(c);
+  const double dx = n.x0[d] - n.x0[c], dy = n.y0[d] - n.y0[c];
+  return -dx > std::fabs(dy);
+}
 
 // The vertices on an edge that no joint sits on, intact or broken: on the mesh's outer
-// boundary (an edge of one triangle only: what an observer of the sample sees) or on an
-// interface between materials (an edge two triangles share without a joint). A joint sits on
-// the edge starting at its node 0 (first triangle) and at its node 2 (second triangle).
+// boundary (an edge of one triangle only), facing up or not, or on an interface between
+// materials (an edge two triangles share without a joint). A joint sits on the edge starting
+// at its node 0 (first triangle) and at its node 2 (second triangle).
 std::vector<std::uint8_t> surface_kinds(const State& s, index_t nvertices) {
   const Nodes& n = s.nodes;
   std::vector<std::uint8_t> jointed(n.size(), 0);
@@ -37,7 +46,8 @@ std::vector<std::uint8_t> surface_kinds(const State& s, index_t nvertices) {
     if (jointed[c]) continue;
     const std::uint64_t key = edge_key(c);
     const auto same = std::equal_range(edges.begin(), edges.end(), key);
-    const std::uint8_t k = same.second - same.first == 1 ? kOuterSurface : kInterface;
+    const bool outer = same.second - same.first == 1;
+    const std::uint8_t k = !outer ? kInterface : faces_up(n, c) ? kTopSurface : kSideSurface;
     for (const index_t v : {index_t(key >> 32), index_t(key & 0xffffffffu)}) kind[v] = std::max(kind[v], k);
   }
   return kind;
@@ -58,8 +68,9 @@ std::vector<Layer> material_layers(const State& s) {
   return layers;
 }
 
-// The best mouth so far: a vertex on the outer surface beats one on an interface, which beats
-// an internal one; then the higher y0, then the lower vertex id.
+// The best mouth so far: a vertex on the top surface beats one on another outer surface, which
+// beats one on an interface, which beats an internal one; then the higher y0, then the lower
+// vertex id.
 struct Mouth {
   index_t vertex = kNoIndex;
   std::uint16_t material = 0;
@@ -138,7 +149,7 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
   std::vector<index_t> crack_at_mouth(nvertices, kNoIndex);
   for (index_t k = 0; k < cracks.size(); ++k) {
     crack_at_mouth[mouths[k].vertex] = k;
-    cracks[k].on_outer_surface = mouths[k].surface == kOuterSurface;
+    cracks[k].on_top_surface = mouths[k].surface == kTopSurface;
     cracks[k].width_m = -std::numeric_limits<double>::infinity();
     for (const index_t j : cracks[k].joints) {
       const index_t* jn = &joints.node[4 * j];
@@ -172,7 +183,7 @@ CrackSummary summarize_cracks(const std::vector<Crack>& cracks) {
     ++sum.count;
     sum.total_width_m += c.width_m;
     length += c.length_m;
-    if (!c.on_outer_surface) continue;
+    if (!c.on_top_surface) continue;
     ++sum.surface_count;
     sum.surface_total_width_m += c.width_m;
   }

@@ -13,7 +13,7 @@ struct Crack {
   double width_m = 0;        // normal opening at the mouth (the largest of the joints there)
   double length_m = 0;       // sum of the current lengths of its joints
   bool penetrating = false;  // reaches the bottom of its material's layer
-  bool on_outer_surface = false;  // its mouth is on the mesh's outer boundary (seen from outside)
+  bool on_top_surface = false;  // its mouth is on the outer boundary facing up (seen from above)
   std::vector<index_t> joints;  // ascending: its broken and process-zone joints
 };
 
@@ -26,14 +26,15 @@ constexpr double kProcessZoneDamage = 0.5;
 // points at D >= kProcessZoneDamage), which link the broken stretches of a crack that
 // zig-zags; a set of open joints without a broken one is no crack. Length and penetration
 // count broken joints only; the mouth and the width may lie on a process-zone joint. The mouth
-// is the crack's highest vertex (by initial y) on the mesh's outer boundary (an edge of one
-// triangle: the surface an observer sees), else the highest on an interface between materials
-// (an edge two triangles share without a joint: a crack opening from a base), else its
-// highest vertex (an internal crack). Penetrating: some vertex within 1e-6 of the layer height of
+// is the crack's highest vertex (by initial y) on the top surface (an edge of one triangle whose
+// outward normal is within 45 degrees of up: what an observer sees from above), else the
+// highest on the rest of the outer boundary (a layer's end or underside), else the highest on
+// an interface between materials (an edge two triangles share without a joint: a crack opening
+// from a base), else its highest vertex (an internal crack). Penetrating: some vertex within 1e-6 of the layer height of
 // the lowest initial y of the joint's material. O(nodes log nodes + joints), deterministic.
 std::vector<Crack> find_cracks(const State& state, double width_threshold_m);
 
-// All cracks, and those that open on the outer surface: the cracks an experimenter counts and
+// All cracks, and those that open on the top surface: the cracks an experimenter counts and
 // measures from above (paper Fig. 19: seven surface cracks; a crack rising from the base is
 // seen only in section).
 struct CrackSummary {

@@ -9,7 +9,7 @@ void append_cracks_csv(CracksCsv& csv, double time_s, const std::vector<Crack>& 
     const Crack& c = cracks[k];
     csv.rows += format_double(time_s) + "," + std::to_string(k) + "," + format_double(c.x_m) + "," +
                 format_double(c.width_m) + "," + format_double(c.length_m) + "," +
-                (c.penetrating ? "1" : "0") + "," + (c.on_outer_surface ? "1" : "0") + "\n";
+                (c.penetrating ? "1" : "0") + "," + (c.on_top_surface ? "1" : "0") + "\n";
   }
   write_cracks_csv(csv);
 }
