@@ -199,3 +199,24 @@ TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
     CHECK_NOTHROW(ydry::setup_state(ydry::load_deck(deck.string(), {"solver.relaxation_max_steps=1"})));
   }
 }
+
+TEST_CASE("a malformed --set key path is an error, not read as another key", "[deck]") {
+  // Each of these once set run.name or moisture.boundary[0].rate as if well formed.
+  for (const char* set : {"run[-1].name=x", "run.name[-2]=x", "run.name.=x", "moisture.boundary[0x].rate=1",
+                          "moisture.boundary[ 0].rate=1", "moisture.boundary[99999999999999999999].rate=1"}) {
+    INFO(set);
+    CHECK_THROWS_WITH(ydry_test::strip_deck({set}), Catch::StartsWith(std::string("--set ") + set + ": ") &&
+                                                        (Catch::Contains("malformed index") || Catch::Contains("empty key")));
+  }
+  CHECK(ydry_test::strip_deck({"moisture.boundary[0].rate=2"}).moisture_boundaries[0].rate_kg_m2_s == 2.0);
+}
+
+TEST_CASE("read_deck reads a deck's text as load_deck reads its file", "[deck]") {
+  const std::string path = YDRY_SOURCE_DIR "/inputs/peron/peron.toml";
+  const std::vector<std::string> sets = {"materials.soil.young=1e6"};
+  const ydry::Deck from_file = ydry::load_deck(path, sets);
+  const ydry::Deck from_text = ydry::read_deck(ydry_test::read_text(path), path, sets);
+  CHECK(ydry::resolved_deck_text(from_text) == ydry::resolved_deck_text(from_file));
+  CHECK(from_text.mesh_file == from_file.mesh_file);
+  CHECK(from_text.materials.at("soil").young == 1e6);
+}

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "tests/test_support.h"
@@ -207,4 +208,17 @@ TEST_CASE("gmsh: errors name the file and line", "[gmsh]") {
     const auto path = write_temp("empty.msh", "");
     CHECK(starts_with(gmsh_error(path), path + ": mesh.file: "));
   }
+}
+
+TEST_CASE("gmsh: a stream reads as its file, and errors name the name given", "[gmsh]") {
+  const MeshInput from_file = read_gmsh(data_dir + "two_materials.msh");
+  std::istringstream text(ydry_test::read_text(data_dir + "two_materials.msh"));
+  const MeshInput from_stream = ydry::read_gmsh(text, "two_materials.msh");
+  CHECK(from_stream.vx == from_file.vx);
+  CHECK(from_stream.vy == from_file.vy);
+  CHECK(from_stream.tri == from_file.tri);
+  CHECK(from_stream.tri_material == from_file.tri_material);
+  CHECK(from_stream.boundaries == from_file.boundaries);
+  std::istringstream version("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
+  CHECK_THROWS_WITH(ydry::read_gmsh(version, "in memory"), Catch::StartsWith("in memory:2: mesh.file: "));
 }

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "ycore/input_error.h"
 #include "ycore/toml_reader.h"
+#include "ycore/toml_writer.h"
 
 namespace ydry {
 namespace {
@@ -40,7 +42,10 @@ void read_mesh(TableReader r, Deck& d) {
   if (file) {
     const std::filesystem::path deck_dir = std::filesystem::path(d.path).parent_path();
     const std::filesystem::path p = deck_dir / *file;
-    if (!std::filesystem::is_regular_file(p)) r.error("file", "mesh file '" + p.string() + "' not found");
+    // A regular file only (stat, not opened here): the mesh reader never meets /dev/zero, a
+    // FIFO or a folder. The error_code form, as a name too long to stat is "not found" too.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(p, error)) r.error("file", "mesh file '" + p.string() + "' not found");
     d.mesh_file = p.string();
   } else {
     d.mesh_generator = *generator;
@@ -213,14 +218,13 @@ void read_solver(TableReader r, Deck& d) {
 
 }  // namespace
 
-Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
+Deck read_deck(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
   Deck d;
   d.path = path;
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": deck file not found");
   toml::table& root = d.resolved;
   Origin origin{path, {}};
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " +
                      std::string(e.description()));
@@ -252,12 +256,19 @@ Deck load_deck(const std::string& path, const std::vector<std::string>& override
   return d;
 }
 
+Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": deck file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the deck file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_deck(text.str(), path, overrides);
+}
+
 std::string resolved_deck_text(const Deck& deck) {
-  std::ostringstream out;
-  out << "# The deck as this run used it: " << deck.path
-      << " with --set overrides and defaults applied.\n"
-      << toml::toml_formatter(deck.resolved) << "\n";
-  return out.str();
+  return "# The deck as this run used it: " + deck.path + " with --set overrides and defaults applied.\n" +
+         toml_text(deck.resolved);
 }
 
 }  // namespace ydry

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <istream>
 #include <map>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ MeshInput generate_rectangle(double lx, double ly, double element_size,
 // material), 2-node lines in physical curves (each curve name is a boundary). Throws
 // InputError naming the file and line on anything it cannot represent.
 MeshInput read_gmsh(const std::string& path);
+// The same from a stream; `path` names it in messages.
+MeshInput read_gmsh(std::istream& in, const std::string& path);
 
 // Makes every triangle counter-clockwise (swaps two corners of clockwise ones) and rejects
 // degenerate triangles; run on every MeshInput before use.

@@ -1,5 +1,7 @@
 #include "ycore/toml_reader.h"
 
+#include <charconv>
+
 #include "ycore/input_error.h"
 
 namespace ydry {
@@ -34,31 +36,33 @@ namespace {
 // One path segment of --set: a key, optionally indexing an array of tables ("boundary[1]").
 struct PathSegment {
   std::string key;
-  long index = -1;
+  long index = -1;  // none
 };
 
+// "a.b[1].c" -> a, b[1], c. An empty key ("a..b", "a.b."), or an index that is not a plain
+// decimal number ("b[-1]", "b[0x1]", "b[ 1]"), is an error rather than read as something else.
 std::vector<PathSegment> split_key_path(const std::string& path, const std::string& where) {
   std::vector<PathSegment> out;
-  std::istringstream in(path);
-  std::string part;
-  while (std::getline(in, part, '.')) {
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = path.find('.', start);
+    const std::string part = path.substr(start, dot - start);  // to the end when there is no dot
     PathSegment seg;
     const auto bracket = part.find('[');
     seg.key = part.substr(0, bracket);
-    if (bracket != std::string::npos) {
-      const auto close = part.find(']', bracket);
-      if (close != part.size() - 1) throw InputError(where + ": malformed index in '" + part + "'");
-      try {
-        seg.index = std::stol(part.substr(bracket + 1, close - bracket - 1));
-      } catch (const std::exception&) {
-        throw InputError(where + ": malformed index in '" + part + "'");
-      }
-    }
     if (seg.key.empty()) throw InputError(where + ": empty key in '" + path + "'");
+    if (bracket != std::string::npos) {
+      const std::string digits = part.substr(bracket + 1, part.size() - bracket - 2);
+      const char* const end = digits.data() + digits.size();
+      const bool plain = part.back() == ']' && !digits.empty() &&
+                         digits.find_first_not_of("0123456789") == std::string::npos;
+      const auto parsed = std::from_chars(digits.data(), end, seg.index);
+      if (!plain || parsed.ec != std::errc() || parsed.ptr != end)
+        throw InputError(where + ": malformed index in '" + part + "'");
+    }
     out.push_back(seg);
+    if (dot == std::string::npos) return out;
+    start = dot + 1;
   }
-  if (out.empty()) throw InputError(where + ": no key given");
-  return out;
 }
 
 // The override's value as a TOML node; text that is not a TOML value is taken as a string,
