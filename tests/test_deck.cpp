@@ -220,3 +220,12 @@ TEST_CASE("read_deck reads a deck's text as load_deck reads its file", "[deck]")
   CHECK(from_text.mesh_file == from_file.mesh_file);
   CHECK(from_text.materials.at("soil").young == 1e6);
 }
+
+TEST_CASE("a generated rectangle with more triangles than 32-bit indices number is refused", "[deck]") {
+  // 1e5 x 1e5 cells: 2e10 triangles (the count was cast to 32 bits, undefined past 2^32).
+  CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-5"}),
+                    Catch::Contains("mesh.element_size: makes 2e+10 triangles"));
+  CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.element_size=1e-320"}), Catch::Contains("mesh.element_size: makes inf"));
+  // 10,000 x 10,000 cells of "right" fit: 2e8 triangles, 6e8 corners.
+  CHECK_NOTHROW(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-4"}));
+}

@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "tests/test_support.h"
 #include "ycore/deck.h"
 #include "ycore/input_error.h"
+#include "ycore/mesh_input.h"
 
 using ydry::InputError;
 
@@ -87,4 +89,15 @@ TEST_CASE("fuzz: a mesh file name too long to stat is not found", "[fuzz]") {
   std::string text = strip_text();
   text.replace(text.find("generator = \"rectangle\""), 23, "file = \"" + std::string(300, 'a') + ".msh\"");
   CHECK_THAT(deck_error(text), Catch::StartsWith(kStripPath + ":12: mesh.file: mesh file") && Catch::Contains("not found"));
+}
+
+// The Gmsh fuzz target's check of the mesh it gets back: coordinates near 1e300 made an
+// infinite or NaN area, which passed as counter-clockwise.
+TEST_CASE("fuzz: a triangle whose area overflows a double is refused", "[fuzz]") {
+  std::string text = ydry_test::kOneTriangleMsh;
+  text.replace(text.find("\n1 0 0\n"), 7, "\n1e300 0 0\n");
+  text.replace(text.find("\n0 1 0\n"), 7, "\n0 1e300 0\n");
+  std::istringstream in(text);
+  ydry::MeshInput mesh = ydry::read_gmsh(in, "big.msh");
+  CHECK_THROWS_WITH(ydry::orient_counter_clockwise(mesh), Catch::Contains("too large for a double"));
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "ycore/input_error.h"
+#include "ycore/mesh_input.h"
 #include "ycore/toml_reader.h"
 #include "ycore/toml_writer.h"
 
@@ -53,6 +54,13 @@ void read_mesh(TableReader r, Deck& d) {
     d.element_size_m = r.number("element_size", kPositive, std::nullopt);
     d.mesh_pattern = r.string("pattern", {"right", "left", "cross"}, std::string("right"));
     d.mesh_material = r.string("material", {}, std::nullopt);
+    const auto cells = rectangle_cells(d.mesh_size[0], d.mesh_size[1], d.element_size_m);
+    const double triangles = cells[0] * cells[1] * (d.mesh_pattern == "cross" ? 4 : 2);
+    if (!(triangles <= kMaxTriangles)) {  // also when the cell count overflows to inf
+      std::ostringstream s;
+      s << "makes " << triangles << " triangles of mesh.size; 32-bit indices number at most " << kMaxTriangles;
+      r.error("element_size", s.str());
+    }
   }
   r.finish();
 }
