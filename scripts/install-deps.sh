@@ -3,6 +3,7 @@
 # what is missing, and runs `apt-get update` first when anything is.
 #   scripts/install-deps.sh                  build, test, plotting and rendering dependencies
 #   scripts/install-deps.sh --with-paraview  also the ParaView GUI
+#   scripts/install-deps.sh --with-clang     also clang and libFuzzer (`make fuzz`)
 set -euo pipefail
 
 packages=(
@@ -17,7 +18,8 @@ for arg in "$@"; do
     # Debian 12's python3-paraview (pvpython) conflicts with python3-vtk9, which libvtk9-dev
     # needs: installing it removes the build dependencies. Only the GUI comes here.
     --with-paraview) packages+=(paraview) ;;
-    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    --with-clang) packages+=(clang libclang-rt-dev) ;;
+    -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done
