@@ -4,8 +4,8 @@
 
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <istream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
