@@ -229,3 +229,14 @@ TEST_CASE("a generated rectangle with more triangles than 32-bit indices number 
   // 10,000 x 10,000 cells of "right" fit: 2e8 triangles, 6e8 corners.
   CHECK_NOTHROW(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-4"}));
 }
+
+TEST_CASE("a mesh file that is not a regular file is not found, and never opened", "[deck]") {
+  // read_deck only stats mesh.file, so neither it nor the mesh reader ever reads /dev/zero.
+  for (const char* file : {"/dev/zero", "/dev/stdin", YDRY_SOURCE_DIR "/tests/data"}) {
+    INFO(file);
+    std::string text = ydry_test::read_text(YDRY_SOURCE_DIR "/verification/strip1d/strip1d.toml");
+    text.replace(text.find("generator = \"rectangle\""), 23, std::string("file = \"") + file + "\"");
+    CHECK_THROWS_WITH(ydry::read_deck(text, "deck.toml", {}), Catch::Contains("mesh.file: mesh file") &&
+                                                                  Catch::Contains("not found"));
+  }
+}

@@ -222,3 +222,18 @@ TEST_CASE("gmsh: a stream reads as its file, and errors name the name given", "[
   std::istringstream version("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
   CHECK_THROWS_WITH(ydry::read_gmsh(version, "in memory"), Catch::StartsWith("in memory:2: mesh.file: "));
 }
+
+TEST_CASE("gmsh: a count larger than the file is an error where its items end, not an allocation", "[gmsh]") {
+  // No count sizes a buffer: each item must be a line (or field) of the file, so the reader
+  // stops at the first line that is not one (bad_alloc or a hang otherwise).
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"$Nodes\n1 3 10 30\n2 1 0 3\n", "$Nodes\n1 3 10 30\n2 1 0 4000000000000000000\n"},
+           {"$Nodes\n1 3 10 30\n", "$Nodes\n4000000000000000000 3 10 30\n"},
+           {"$Elements\n1 1 1 1\n2 1 2 1\n", "$Elements\n1 1 1 1\n2 1 2 4000000000000000000\n"},
+           {"$PhysicalNames\n1\n", "$PhysicalNames\n4000000000000000000\n"}}) {
+    INFO(to);
+    std::istringstream in(replaced(kOneTriangleMsh, from, to));
+    CHECK_THROWS_WITH(ydry::read_gmsh(in, "huge.msh"),
+                      Catch::StartsWith("huge.msh:") && Catch::Contains("expected"));  // or "unexpected"
+  }
+}
