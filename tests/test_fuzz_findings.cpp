@@ -101,3 +101,17 @@ TEST_CASE("fuzz: a triangle whose area overflows a double is refused", "[fuzz]")
   ydry::MeshInput mesh = ydry::read_gmsh(in, "big.msh");
   CHECK_THROWS_WITH(ydry::orient_counter_clockwise(mesh), Catch::Contains("too large for a double"));
 }
+
+// A --set is bytes from the command line: a material named by invalid UTF-8 (0xDC 0xDC ...)
+// was written to the resolved deck as "\u00DC\u00DC...", which reads back as another name.
+TEST_CASE("fuzz: a --set that is not UTF-8 is refused", "[fuzz]") {
+  for (const std::string& set : {std::string("materials.\xdc\xdcsm.density=1500"), std::string("run.name=dry\xff"),
+                                 std::string("run.name=\xc0\xae"), std::string("run.name=\xed\xa0\x80"),
+                                 std::string("run.name=\xf4\x90\x80\x80"), std::string("run.name=\xe2\x82")}) {
+    INFO(set);
+    CHECK_THAT(deck_error(strip_text(), {set}), Catch::StartsWith("--set " + set + ": not UTF-8 text"));
+  }
+  // Well-formed UTF-8 of 2, 3 and 4 bytes, the highest code point among them, is taken.
+  const std::string name = "s\xc3\xa9\xe2\x82\xac\xf4\x8f\xbf\xbf";
+  CHECK(ydry::read_deck(strip_text(), kStripPath, {"run.name=" + name}).name == name);
+}
