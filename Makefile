@@ -11,7 +11,7 @@ THREADS  ?=
 # Test time on CI: ctest runs its cases on every core.
 CTEST_FLAGS ?= --output-on-failure -j $(JOBS)
 
-.PHONY: all deps configure build run test verify bench sweeps clean
+.PHONY: all deps configure build run test verify bench sweeps fuzz sanitize clean
 
 all: build
 
@@ -57,5 +57,31 @@ sweeps: build
 	  $(if $(THREADS),--threads $(THREADS))
 	$(PYTHON) scripts/plot_sweep.py $(SWEEPS_OUT) --out $(SWEEPS_OUT)/plots
 
+# libFuzzer on the deck reader (with --set overrides) and the Gmsh reader, built with clang,
+# ASan and UBSan in their own folder; FUZZ_RUNS executions per target from tests/fuzz/corpus,
+# each target stopped after FUZZ_MAX_TIME seconds at most (then it fails). README: reproduce
+# one input with `build-fuzz/fuzz_NAME FILE`.
+FUZZ_BUILD    ?= build-fuzz
+FUZZ_RUNS     ?= 100000
+FUZZ_MAX_TIME ?= 1800
+fuzz:
+	@scripts/install-deps.sh --with-clang
+	cmake -S . -B $(FUZZ_BUILD) -DYDRY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	tests/fuzz/run_fuzz.sh $(FUZZ_BUILD) $(FUZZ_RUNS) $(FUZZ_MAX_TIME)
+
+# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (GCC, -O1);
+# any report fails the test it happens in. -Wno-maybe-uninitialized: GCC warns falsely under
+# the sanitizers (its manual says so), here in libstdc++'s <regex> that Catch2 includes.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS) -Wno-maybe-uninitialized" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE_FLAGS)" \
+	  -DYDRY_SCRIPT_TEST_TIMEOUT=1200
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  ctest $(CTEST_FLAGS)
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD)

@@ -3,6 +3,7 @@
 # what is missing, and runs `apt-get update` first when anything is.
 #   scripts/install-deps.sh                  build, test, plotting and rendering dependencies
 #   scripts/install-deps.sh --with-paraview  also ParaView and its Python client, pvpython
+#   scripts/install-deps.sh --with-clang     also clang and libFuzzer (`make fuzz`)
 set -euo pipefail
 
 packages=(
@@ -19,7 +20,8 @@ for arg in "$@"; do
     # modules) conflicts with python3-vtk9, which libvtk9-dev needs: installing it removes the
     # build dependencies, and so would apt's default of installing what paraview recommends.
     --with-paraview) packages+=(paraview); with_paraview=1 ;;
-    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    --with-clang) packages+=(clang libclang-rt-dev) ;;
+    -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done

@@ -203,3 +203,44 @@ TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
     CHECK_NOTHROW(ydry::setup_state(ydry::load_deck(deck.string(), {"solver.relaxation_max_steps=1"})));
   }
 }
+
+TEST_CASE("a malformed --set key path is an error, not read as another key", "[deck]") {
+  // Each of these once set run.name or moisture.boundary[0].rate as if well formed.
+  for (const char* set : {"run[-1].name=x", "run.name[-2]=x", "run.name.=x", "moisture.boundary[0x].rate=1",
+                          "moisture.boundary[ 0].rate=1", "moisture.boundary[99999999999999999999].rate=1"}) {
+    INFO(set);
+    CHECK_THROWS_WITH(ydry_test::strip_deck({set}), Catch::StartsWith(std::string("--set ") + set + ": ") &&
+                                                        (Catch::Contains("malformed index") || Catch::Contains("empty key")));
+  }
+  CHECK(ydry_test::strip_deck({"moisture.boundary[0].rate=2"}).moisture_boundaries[0].rate_kg_m2_s == 2.0);
+}
+
+TEST_CASE("read_deck reads a deck's text as load_deck reads its file", "[deck]") {
+  const std::string path = YDRY_SOURCE_DIR "/inputs/peron/peron.toml";
+  const std::vector<std::string> sets = {"materials.soil.young=1e6"};
+  const ydry::Deck from_file = ydry::load_deck(path, sets);
+  const ydry::Deck from_text = ydry::read_deck(ydry_test::read_text(path), path, sets);
+  CHECK(ydry::resolved_deck_text(from_text) == ydry::resolved_deck_text(from_file));
+  CHECK(from_text.mesh_file == from_file.mesh_file);
+  CHECK(from_text.materials.at("soil").young == 1e6);
+}
+
+TEST_CASE("a generated rectangle with more triangles than 32-bit indices number is refused", "[deck]") {
+  // 1e5 x 1e5 cells: 2e10 triangles (the count was cast to 32 bits, undefined past 2^32).
+  CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-5"}),
+                    Catch::Contains("mesh.element_size: makes 2e+10 triangles"));
+  CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.element_size=1e-320"}), Catch::Contains("mesh.element_size: makes inf"));
+  // 10,000 x 10,000 cells of "right" fit: 2e8 triangles, 6e8 corners.
+  CHECK_NOTHROW(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-4"}));
+}
+
+TEST_CASE("a mesh file that is not a regular file is not found, and never opened", "[deck]") {
+  // read_deck only stats mesh.file, so neither it nor the mesh reader ever reads /dev/zero.
+  for (const char* file : {"/dev/zero", "/dev/stdin", YDRY_SOURCE_DIR "/tests/data"}) {
+    INFO(file);
+    std::string text = ydry_test::read_text(YDRY_SOURCE_DIR "/verification/strip1d/strip1d.toml");
+    text.replace(text.find("generator = \"rectangle\""), 23, std::string("file = \"") + file + "\"");
+    CHECK_THROWS_WITH(ydry::read_deck(text, "deck.toml", {}), Catch::Contains("mesh.file: mesh file") &&
+                                                                  Catch::Contains("not found"));
+  }
+}

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "tests/test_support.h"
@@ -206,5 +207,33 @@ TEST_CASE("gmsh: errors name the file and line", "[gmsh]") {
   SECTION("empty file") {
     const auto path = write_temp("empty.msh", "");
     CHECK(starts_with(gmsh_error(path), path + ": mesh.file: "));
+  }
+}
+
+TEST_CASE("gmsh: a stream reads as its file, and errors name the name given", "[gmsh]") {
+  const MeshInput from_file = read_gmsh(data_dir + "two_materials.msh");
+  std::istringstream text(ydry_test::read_text(data_dir + "two_materials.msh"));
+  const MeshInput from_stream = ydry::read_gmsh(text, "two_materials.msh");
+  CHECK(from_stream.vx == from_file.vx);
+  CHECK(from_stream.vy == from_file.vy);
+  CHECK(from_stream.tri == from_file.tri);
+  CHECK(from_stream.tri_material == from_file.tri_material);
+  CHECK(from_stream.boundaries == from_file.boundaries);
+  std::istringstream version("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
+  CHECK_THROWS_WITH(ydry::read_gmsh(version, "in memory"), Catch::StartsWith("in memory:2: mesh.file: "));
+}
+
+TEST_CASE("gmsh: a count larger than the file is an error where its items end, not an allocation", "[gmsh]") {
+  // No count sizes a buffer: each item must be a line (or field) of the file, so the reader
+  // stops at the first line that is not one (bad_alloc or a hang otherwise).
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"$Nodes\n1 3 10 30\n2 1 0 3\n", "$Nodes\n1 3 10 30\n2 1 0 4000000000000000000\n"},
+           {"$Nodes\n1 3 10 30\n", "$Nodes\n4000000000000000000 3 10 30\n"},
+           {"$Elements\n1 1 1 1\n2 1 2 1\n", "$Elements\n1 1 1 1\n2 1 2 4000000000000000000\n"},
+           {"$PhysicalNames\n1\n", "$PhysicalNames\n4000000000000000000\n"}}) {
+    INFO(to);
+    std::istringstream in(replaced(kOneTriangleMsh, from, to));
+    CHECK_THROWS_WITH(ydry::read_gmsh(in, "huge.msh"),
+                      Catch::StartsWith("huge.msh:") && Catch::Contains("expected"));  // or "unexpected"
   }
 }

@@ -153,7 +153,7 @@ std::string checkpoint_deck_text(const Checkpoint& checkpoint) {
 
 Deck checkpoint_deck(const Checkpoint& checkpoint, const std::string& path, const std::string& deck_path,
                      const std::vector<std::string>& overrides) {
-  Deck deck = load_deck_text(checkpoint_deck_text(checkpoint), path + " (its deck.toml)");
+  Deck deck = read_deck(checkpoint_deck_text(checkpoint), path + " (its deck.toml)", {});
   if (deck_hash(deck) != checkpoint.deck_hash)
     throw InputError(path + ": the deck it holds does not resolve to the values its header was made from");
   if (deck_path.empty()) {

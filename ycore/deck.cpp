@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <functional>
+#include <fstream>
 #include <sstream>
 
 #include "ycore/input_error.h"
+#include "ycore/mesh_input.h"
 #include "ycore/toml_reader.h"
+#include "ycore/toml_writer.h"
 
 namespace ydry {
 namespace {
@@ -41,7 +43,10 @@ void read_mesh(TableReader r, Deck& d) {
   if (file) {
     const std::filesystem::path deck_dir = std::filesystem::path(d.path).parent_path();
     const std::filesystem::path p = deck_dir / *file;
-    if (!std::filesystem::is_regular_file(p)) r.error("file", "mesh file '" + p.string() + "' not found");
+    // A regular file only (stat, not opened here): the mesh reader never meets /dev/zero, a
+    // FIFO or a folder. The error_code form, as a name too long to stat is "not found" too.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(p, error)) r.error("file", "mesh file '" + p.string() + "' not found");
     d.mesh_file = p.string();
   } else {
     d.mesh_generator = *generator;
@@ -49,6 +54,13 @@ void read_mesh(TableReader r, Deck& d) {
     d.element_size_m = r.number("element_size", kPositive, std::nullopt);
     d.mesh_pattern = r.string("pattern", {"right", "left", "cross"}, std::string("right"));
     d.mesh_material = r.string("material", {}, std::nullopt);
+    const auto cells = rectangle_cells(d.mesh_size[0], d.mesh_size[1], d.element_size_m);
+    const double triangles = cells[0] * cells[1] * (d.mesh_pattern == "cross" ? 4 : 2);
+    if (!(triangles <= kMaxTriangles)) {  // also when the cell count overflows to inf
+      std::ostringstream s;
+      s << "makes " << triangles << " triangles of mesh.size; 32-bit indices number at most " << kMaxTriangles;
+      r.error("element_size", s.str());
+    }
   }
   r.finish();
 }
@@ -212,10 +224,19 @@ void read_solver(TableReader r, Deck& d) {
   r.finish();
 }
 
-// The schema applied to a parsed deck; `d` holds its path and the parsed table.
-Deck read_deck(Deck d, const std::vector<std::string>& overrides) {
+}  // namespace
+
+Deck read_deck(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  Deck d;
+  d.path = path;
   toml::table& root = d.resolved;
-  Origin origin{d.path, {}};
+  Origin origin{path, {}};
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " +
+                     std::string(e.description()));
+  }
   for (const std::string& o : overrides) apply_override(root, o, origin);
 
   TableReader top(root, "", origin);
@@ -243,33 +264,18 @@ Deck read_deck(Deck d, const std::vector<std::string>& overrides) {
   return d;
 }
 
-// `source` parsed as TOML into a deck named by it (errors name its lines).
-Deck parse_deck(const std::string& source, const std::function<toml::table()>& parse) {
-  Deck d;
-  d.path = source;
-  try {
-    d.resolved = parse();
-  } catch (const toml::parse_error& e) {
-    throw InputError(source + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
-  }
-  return d;
-}
-
-}  // namespace
-
 Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": deck file not found");
-  return read_deck(parse_deck(path, [&] { return toml::parse_file(path); }), overrides);
-}
-
-Deck load_deck_text(const std::string& text, const std::string& source) {
-  return read_deck(parse_deck(source, [&] { return toml::parse(text, source); }), {});
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": deck file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the deck file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_deck(text.str(), path, overrides);
 }
 
 std::string resolved_deck_values(const Deck& deck) {
-  std::ostringstream out;
-  out << toml::toml_formatter(deck.resolved) << "\n";
-  return out.str();
+  return toml_text(deck.resolved);
 }
 
 std::string resolved_deck_text(const Deck& deck) {

@@ -119,9 +119,9 @@ struct Deck {
 // that is not TOML is taken as a string). Throws InputError.
 Deck load_deck(const std::string& path, const std::vector<std::string>& overrides);
 
-// A deck given as text (a checkpoint's deck.toml), read like a file named `source`, which
-// its error messages name.
-Deck load_deck_text(const std::string& text, const std::string& source);
+// The same from the deck's text: `path` names it in messages and locates a relative
+// mesh.file, which is only checked to be a regular file (stat), never opened here.
+Deck read_deck(const std::string& text, const std::string& path, const std::vector<std::string>& overrides);
 
 // The resolved deck as TOML text (what deck.toml in the output holds): a header line that
 // names the deck file, then resolved_deck_values.

@@ -18,7 +18,7 @@ namespace {
 // The file being read and its line last read (1-based number, text without trailing blanks).
 struct MshFile {
   std::string path;
-  std::ifstream in;
+  std::istream& in;
   long line = 0;
   std::string text;
 };
@@ -282,9 +282,8 @@ void read_elements(MshFile& file, const MshModel& model, MeshInput& mesh) {
 
 }  // namespace
 
-MeshInput read_gmsh(const std::string& path) {
-  MshFile file{path, std::ifstream(path), 0, ""};
-  if (!file.in) fail(file, "cannot open the mesh file");
+MeshInput read_gmsh(std::istream& in, const std::string& path) {
+  MshFile file{path, in, 0, ""};
   MshModel model;
   MeshInput mesh;
   bool have_format = false;
@@ -312,6 +311,12 @@ MeshInput read_gmsh(const std::string& path) {
   if (!have_format) fail_at(path, 0, "empty file, or not a Gmsh mesh");
   if (mesh.triangle_count() == 0) fail_at(path, 0, "no 3-node triangles in the mesh");
   return mesh;
+}
+
+MeshInput read_gmsh(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) fail_at(path, 0, "cannot open the mesh file");
+  return read_gmsh(in, path);
 }
 
 }  // namespace ydry

@@ -7,12 +7,15 @@
 
 namespace ydry {
 
+std::array<double, 2> rectangle_cells(double lx, double ly, double element_size) {
+  return {std::max(1.0, std::round(lx / element_size)), std::max(1.0, std::round(ly / element_size))};
+}
+
 MeshInput generate_rectangle(double lx, double ly, double element_size,
                              const std::string& pattern, const std::string& material) {
-  // Cells as close to element_size as fits a whole number of them.
-  const index_t nx = static_cast<index_t>(std::max(1.0, std::round(lx / element_size)));
-  const index_t ny = static_cast<index_t>(std::max(1.0, std::round(ly / element_size)));
   const bool cross = pattern == "cross";
+  const auto cells = rectangle_cells(lx, ly, element_size);  // within kMaxTriangles: the deck checks
+  const index_t nx = static_cast<index_t>(cells[0]), ny = static_cast<index_t>(cells[1]);
   MeshInput m;
   const auto corner = [&](index_t i, index_t j) { return j * (nx + 1) + i; };
   for (index_t j = 0; j <= ny; ++j)
@@ -58,9 +61,10 @@ void orient_counter_clockwise(MeshInput& m) {
     index_t* v = &m.tri[3 * t];
     const double twice_area = (m.vx[v[1]] - m.vx[v[0]]) * (m.vy[v[2]] - m.vy[v[0]]) -
                               (m.vx[v[2]] - m.vx[v[0]]) * (m.vy[v[1]] - m.vy[v[0]]);
-    if (twice_area == 0.0) {
+    if (twice_area == 0.0 || !std::isfinite(twice_area)) {
       std::ostringstream s;
-      s << "triangle " << t << " (vertices " << v[0] << ", " << v[1] << ", " << v[2] << ") has zero area";
+      s << "triangle " << t << " (vertices " << v[0] << ", " << v[1] << ", " << v[2] << ") has "
+        << (twice_area == 0.0 ? "zero area" : "an area too large for a double (coordinates near 1e154 or more)");
       throw InputError(s.str());
     }
     if (twice_area < 0) std::swap(v[1], v[2]);
