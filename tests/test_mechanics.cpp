@@ -286,6 +286,33 @@ TEST_CASE("a bar pulled apart over many relaxations dissipates gf_I per unit cra
   CHECK(e.external_work_J == Approx(dissipated).epsilon(0.01));
 }
 
+TEST_CASE("a run that runs away exits 3 with the step, the node and the causes, and keeps the failed state as its last frame and row",
+          "[mechanics]") {
+  // tests/data/sweep_strip.toml with its right end driven at 1 m/s: the first relaxation
+  // (t = 957.6 s) moves it 958 m at once, far more than the 40 mm strip is wide.
+  ydry_test::TempDir dir;
+  std::string deck = ydry_test::read_text(YDRY_SOURCE_DIR "/tests/data/sweep_strip.toml");
+  const std::string held = "on = \"right\"\nfix = [\"x\", \"y\"]";
+  REQUIRE(deck.find(held) != std::string::npos);
+  deck.replace(deck.find(held), held.size(), "on = \"right\"\nvelocity = [1.0, 0.0]");
+  ydry_test::write_text(dir.file("runaway.toml"), deck);
+  const ydry_test::CommandResult result = ydry_test::run_ydry(dir.file("runaway.toml") + " -o " + dir.file("run") + " --quiet");
+  CHECK(result.exit_code == 3);
+  CHECK(result.output.find("numerical failure at t = 957.6 s") != std::string::npos);
+  CHECK(result.output.find("of triangle") != std::string::npos);
+  CHECK(result.output.find("solver.mechanics_safety") != std::string::npos);
+  // The failed state is the last frame and the last row.
+  const std::string pvd = ydry_test::read_text(dir.file("run/strip.pvd"));
+  const std::size_t last_frame = pvd.rfind("timestep=\"");
+  REQUIRE(last_frame != std::string::npos);
+  CHECK(std::stod(pvd.substr(last_frame + 10)) == Approx(957.6).epsilon(1e-12));
+  const std::string series = ydry_test::read_text(dir.file("run/series.csv"));
+  const std::size_t last_row = series.rfind('\n', series.size() - 2);
+  REQUIRE(last_row != std::string::npos);
+  CHECK(std::stod(series.substr(last_row + 1)) == Approx(957.6).epsilon(1e-12));
+  CHECK(ydry_test::read_text(dir.file("run/summary.json")).find("\"completed\": false") != std::string::npos);
+}
+
 TEST_CASE("a non-finite position stops the relaxation with a NumericalFailure naming the node", "[mechanics]") {
   ydry_test::TempDir dir;
   State s = setup_state(ydry_test::block_deck(dir, "right"));
