@@ -7,11 +7,14 @@ OUTDIR   ?= runs/$(basename $(notdir $(DECK)))
 PYTHON   ?= /usr/bin/python3
 SWEEPS_OUT ?= runs/sweeps
 SWEEPS   ?= inputs/sweeps/young.toml inputs/sweeps/alpha.toml inputs/sweeps/thickness.toml
+ROBUSTNESS_OUT ?= runs/robustness
+ROBUSTNESS ?= verification/peron/robustness/seed.toml verification/peron/robustness/relaxation.toml \
+              verification/peron/robustness/mesh.toml
 THREADS  ?=
 # Test time on CI: ctest runs its cases on every core.
 CTEST_FLAGS ?= --output-on-failure -j $(JOBS)
 
-.PHONY: all deps configure build run test verify bench sweeps fuzz sanitize clean
+.PHONY: all deps configure build run test verify bench sweeps robustness fuzz sanitize clean
 
 all: build
 
@@ -56,6 +59,21 @@ sweeps: build
 	$(PYTHON) scripts/sweep.py $(SWEEPS) --out $(SWEEPS_OUT) --ydry $(BUILD)/ydry --jobs $(JOBS) \
 	  $(if $(THREADS),--threads $(THREADS))
 	$(PYTHON) scripts/plot_sweep.py $(SWEEPS_OUT) --out $(SWEEPS_OUT)/plots
+
+# The Peron figures' robustness (issue 5; verification/peron/README.md "Robustness"): the
+# shipped deck, three heterogeneity seeds, the relaxation cap doubled and the element size
+# halved (its mesh made by gmsh), JOBS at a time, then the verdicts against the shipped run.
+# About 14 hours of one core; run it again after an interruption: runs go on from their
+# checkpoints.
+inputs/peron/peron_fine.msh: inputs/peron/peron.geo
+	gmsh -2 -format msh41 -setnumber h 0.00075 -o $@ $< > $@.log
+	@! grep -q Error $@.log || (cat $@.log; rm -f $@; exit 1)
+	@rm -f $@.log
+
+robustness: build inputs/peron/peron_fine.msh
+	$(PYTHON) scripts/sweep.py $(ROBUSTNESS) --out $(ROBUSTNESS_OUT) --ydry $(BUILD)/ydry --jobs $(JOBS) \
+	  $(if $(THREADS),--threads $(THREADS))
+	$(PYTHON) verification/peron/robustness.py $(ROBUSTNESS_OUT)
 
 # libFuzzer on the deck reader (with --set overrides) and the Gmsh reader, built with clang,
 # ASan and UBSan in their own folder; FUZZ_RUNS executions per target from tests/fuzz/corpus,

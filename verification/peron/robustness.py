@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Robustness of the Peron figures (issue 5): does each variant keep the shipped deck's crack
+count within +-1 and its mean final width within 10 %?
+
+Reads a folder that `make robustness` (scripts/sweep.py on verification/peron/robustness/*.toml)
+filled: OUT/sweep.json names the runs. The reference is the run whose resolved deck.toml sets
+every key of inputs/peron/peron.toml as the deck does (the shipped deck, shared by the
+relaxation and mesh studies); every other run is a variant: three seeds of a 5 % strength
+heterogeneity, the relaxation cap doubled, the element size halved. Each variant's
+surface_crack_count and mean_surface_crack_width_m (summary.json, the figures the experiment
+measures) are compared with the reference's, and printed beside the experiment's (7 cracks,
+0.836 mm). A variant not yet completed is shown at the time it reached and fails `completed`.
+Prints `peron_robustness METRIC VALUE TOLERANCE PASS|FAIL` (METRIC names the variant) and exits
+1 if a check fails, 2 if OUT has no sweep.json or no completed reference run.
+
+    verification/peron/robustness.py runs/robustness
+"""
+import json
+import math
+import sys
+import tomllib
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))
+sys.path.insert(0, str(HERE))
+import check  # noqa: E402  (DECK, deck_differences, number, CRACKS, MEAN_WIDTH, MM)
+import ydry_case  # noqa: E402
+
+COUNT_TOLERANCE = 1     # cracks, against the reference run
+WIDTH_TOLERANCE = 0.10  # relative, against the reference run
+
+
+def runs_of(out):
+    """{folder name: [(study, value text)]} of the runs sweep.json lists, in its order."""
+    runs = {}
+    for sweep in json.loads((out / "sweep.json").read_text())["sweeps"]:
+        for entry in sweep["entries"]:
+            value = entry["value"]
+            label = f"{value * sweep.get('scale', 1.0):g} {sweep.get('unit', '')}".strip()
+            runs.setdefault(entry["folder"], []).append(f"{sweep['axis']} = {label}")
+    return runs
+
+
+def figures(folder):
+    """(summary.json, whether its deck.toml is the shipped deck's) of a run folder, or None if
+    the run has not written its summary yet."""
+    if not (folder / "summary.json").is_file():
+        return None
+    differences = check.deck_differences(folder, tomllib.loads(check.DECK.read_text()))
+    return json.loads((folder / "summary.json").read_text()), differences == []
+
+
+def main():
+    parser = ydry_case.script_parser(__doc__)
+    parser.add_argument("out", type=Path, help="the folder of the robustness runs (sweep.json)")
+    args = parser.parse_args()
+    if not (args.out / "sweep.json").is_file():
+        print(f"robustness: {args.out} has no sweep.json (run `make robustness` first)", file=sys.stderr)
+        return 2
+    runs = {name: (what, figures(args.out / name)) for name, what in runs_of(args.out).items()}
+    reference = [name for name, (_, found) in runs.items() if found is not None and found[1]]
+    if not reference or not runs[reference[0]][1][0]["completed"]:
+        print(f"robustness: {args.out} has no completed run of the shipped deck to compare with", file=sys.stderr)
+        return 2
+    base = runs[reference[0]][1][0]
+    base_width = check.number(base["mean_surface_crack_width_m"])
+    print(f"# reference {reference[0]} ({', '.join(runs[reference[0]][0])}): {base['surface_crack_count']} surface "
+          f"cracks, mean width {base_width * check.MM:.4f} mm (experiment {check.CRACKS}, "
+          f"{check.MEAN_WIDTH * check.MM:.3f} mm)")
+    print("# run                       what                         t (s)   cracks  mean width (mm)  "
+          "vs reference   total (mm)  right end u_x (mm)")
+    verdicts = ydry_case.Verdicts("peron_robustness")
+    for name, (what, found) in runs.items():
+        if name == reference[0]:
+            continue
+        if found is None:
+            verdicts.check(f"{name}_completed", "false", "true", False)
+            print(f"# {name}: not started")
+            continue
+        s = found[0]
+        width = check.number(s["mean_surface_crack_width_m"])
+        change = (width - base_width) / base_width
+        print(f"# {name:25s} {', '.join(what):28s} {s['time_s']:7g} {s['surface_crack_count']:7d} "
+              f"{width * check.MM:16.4f} {100 * change:+11.1f} % {check.number(s['total_surface_crack_width_m']) * check.MM:12.3f} "
+              f"{check.number(s['right_end_displacement_m']) * check.MM:+19.4f}")
+        verdicts.check(f"{name}_completed", bool(s["completed"]), "true", bool(s["completed"]))
+        count_change = s["surface_crack_count"] - base["surface_crack_count"]
+        verdicts.check(f"{name}_surface_crack_count_change", count_change, f"+-{COUNT_TOLERANCE}",
+                       abs(count_change) <= COUNT_TOLERANCE)
+        verdicts.below(f"{name}_mean_surface_width_rel_change", abs(change) if math.isfinite(change) else math.nan,
+                       WIDTH_TOLERANCE)
+    return verdicts.exit_code()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
