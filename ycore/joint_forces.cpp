@@ -33,13 +33,14 @@ void joint_forces(State& s, double dt) {
     const double tx = ex / h, ty = ey / h, nx = -ty, ny = tx;
     const double d0x = n.x[node[0]] - n.x[node[3]], d0y = n.y[node[0]] - n.y[node[3]];
     const double d1x = n.x[node[1]] - n.x[node[2]], d1y = n.y[node[1]] - n.y[node[2]];
-    const double h0 = jt.length0[j], strength_factor = jt.strength_factor[j];
+    const double h0 = jt.length0[j];
+    const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
     double g0x = 0, g0y = 0, g1x = 0, g1y = 0, q = 0;
     for (int p = 0; p < 3; ++p) {
       const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
       const double dx = a * d0x + b * d1x, dy = a * d0y + b * d1y;
       const double o = dx * nx + dy * ny, sl = dx * tx + dy * ty;
-      const PointTraction tr = cohesive_traction(m, strength_factor, h0, o, sl, jt.damage[3 * j + p]);
+      const PointTraction tr = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
       const double w = kJointPointWeight[p] * h0 * thickness;
       const double gx = w * (tr.normal * nx + tr.shear * tx), gy = w * (tr.normal * ny + tr.shear * ty);
       g0x += a * gx, g0y += a * gy, g1x += b * gx, g1y += b * gy;

@@ -36,24 +36,38 @@ inline double softening_length(double fracture_energy, double strength, double p
 }
 }  // namespace joint_law_detail
 
-// Traction at a joint point of initial length h0 with normal opening o and slip s (m), given
-// the point's committed damage. The joint's strength_factor multiplies the material's f_t and
-// c (strength heterogeneity; the fracture energies stay the material's). Pre-peak
-// o_p = 2 h0 f_t / p (Fig. 2a), then z(D) f_t with
+// What the traction law needs of a joint that is the same at its three points and over a
+// step: the slope of both branches k = p / h0 (Pa per m), the joint's strengths (its
+// strength_factor times the material's f_t and c: strength heterogeneity; the fracture
+// energies stay the material's) and the opening at the tensile peak o_p = 2 h0 f_t / p
+// (Fig. 2a). The force kernel makes it once per joint and step, not once per point.
+struct JointStrength {
+  double k = 0, tensile = 0, cohesion = 0, peak_opening = 0;
+};
+inline JointStrength joint_strength(const MaterialModel& m, double strength_factor, double h0) {
+  JointStrength j;
+  j.k = m.penalty / h0;
+  j.tensile = strength_factor * m.tensile_strength;
+  j.cohesion = strength_factor * m.cohesion;
+  j.peak_opening = 2.0 * j.tensile / j.k;
+  return j;
+}
+
+// Traction at a joint point with normal opening o and slip s (m), given the point's
+// committed damage. Pre-peak up to o_p, then z(D) f_t with
 // D = sqrt(((o - o_p)/o_t)^2 + ((|s| - s_p)/s_t)^2) (Fig. 2c), the softening lengths chosen so
 // that pre-peak plus softening work is exactly gf_I (gf_II) per unit area. Mode II strength
 // c + sigma_n tan(phi) under compression (Fig. 2b). Compression is a linear penalty p o / h0.
 // In a material that is not breakable the joint is the linear penalty in both directions.
-inline PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
-                                       double s, double committed_damage) {
-  const double k = m.penalty / h0;  // Pa per m: the initial slope of both branches
+inline PointTraction cohesive_traction(const MaterialModel& m, const JointStrength& j, double o, double s,
+                                       double committed_damage) {
+  const double k = j.k;
   if (!m.breakable) return {k * o, k * s, 0.0};
 
   PointTraction t;
-  const double ft = strength_factor * m.tensile_strength;
-  const double op = 2.0 * ft / k;
+  const double ft = j.tensile, op = j.peak_opening;
   const double compression = o < 0.0 ? -k * o : 0.0;
-  const double fs = strength_factor * m.cohesion + compression * m.tan_friction;  // Fig. 2b
+  const double fs = j.cohesion + compression * m.tan_friction;  // Fig. 2b
   const double abs_s = std::fabs(s);
   // Softening lengths only past a peak: most joints, most of the time, are before both.
   const double dn = o > op ? (o - op) / joint_law_detail::softening_length(m.gf_I, ft, op) : 0.0;
@@ -68,6 +82,12 @@ inline PointTraction cohesive_traction(const MaterialModel& m, double strength_f
   t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / op) * z * ft;
   if (fs > 0.0) t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * z * fs, s);
   return t;
+}
+
+// The same at a joint of initial length h0 and the given strength factor.
+inline PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
+                                       double s, double committed_damage) {
+  return cohesive_traction(m, joint_strength(m, strength_factor, h0), o, s, committed_damage);
 }
 
 // A joint's three integration points: the two ends and the middle, with Simpson weights of
