@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <new>
 
 #include "version.h"
 #include "ycore/input_error.h"
@@ -61,6 +62,10 @@ int main(int argc, char** argv) {
   } catch (const ydry::NumericalFailure& e) {  // in the set-up (after it, run() reports it)
     std::cerr << "ydry: error: " << e.what() << "\n";
     return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ydry: failed: out of memory: the mesh and its buffers need more memory than this machine "
+                 "gives (a coarser mesh.element_size or a smaller domain)\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "ydry: failed: " << e.what() << "\n";
     return 1;
