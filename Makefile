@@ -73,7 +73,7 @@ inputs/peron/peron_fine.msh: inputs/peron/peron.geo
 robustness: build inputs/peron/peron_fine.msh
 	$(PYTHON) scripts/sweep.py $(ROBUSTNESS) --out $(ROBUSTNESS_OUT) --ydry $(BUILD)/ydry --jobs $(JOBS) \
 	  $(if $(THREADS),--threads $(THREADS))
-	$(PYTHON) verification/peron/robustness.py $(ROBUSTNESS_OUT)
+	$(PYTHON) verification/peron/robustness.py $(ROBUSTNESS_OUT) --ydry $(BUILD)/ydry
 
 # libFuzzer on the deck reader (with --set overrides) and the Gmsh reader, built with clang,
 # ASan and UBSan in their own folder; FUZZ_RUNS executions per target from tests/fuzz/corpus,

@@ -2,8 +2,10 @@
 """ctest robustness: verification/peron/robustness.py judges each variant against the run of
 the shipped deck with the bars of issue 5 (surface crack count +-1, mean width within 10 %).
 
-scripts/sweep.py --slurm-only lays out the seed and relaxation studies (sweep.json); the
-reference folder gets the shipped deck as `ydry check` resolves it, the variants made-up
+scripts/sweep.py --slurm-only lays out the seed and relaxation studies (sweep.json); every
+folder gets its deck as `ydry check` resolves it (the reference the shipped deck, the variants
+it with their overrides: a seed differs only in keys the shipped deck leaves to their
+defaults, so the reference must be told apart by the whole resolved deck), and made-up
 summaries on both sides of each bar (reference: 7 cracks, 1.0 mm): 8 cracks at +9.99 % pass
 both; 5 cracks at -15 % fail both; an unfinished run inside the bars fails only `completed`; a
 run not started fails `completed`. Every verdict line must be the expected one and the exit
@@ -21,9 +23,13 @@ import ydry_case  # noqa: E402  (test_arguments, failed)
 
 STUDIES = [REPO / "verification" / "peron" / "robustness" / name for name in ("seed.toml", "relaxation.toml")]
 WIDTH = 1.0e-3
-# folder: (completed, surface cracks, mean width) of the made-up runs; None: not started
-VARIANTS = {"seed_1": (True, 8, 1.0999 * WIDTH), "seed_2": (True, 5, 0.85 * WIDTH),
-            "seed_3": (False, 7, WIDTH), "relaxation_cap_30000": None}
+# folder: (overrides, (completed, surface cracks, mean width) of the made-up run or None: not
+# started)
+HETEROGENEITY = "materials.soil.strength_heterogeneity=0.05"
+VARIANTS = {"seed_1": (["run.seed=1", HETEROGENEITY], (True, 8, 1.0999 * WIDTH)),
+            "seed_2": (["run.seed=2", HETEROGENEITY], (True, 5, 0.85 * WIDTH)),
+            "seed_3": (["run.seed=3", HETEROGENEITY], (False, 7, WIDTH)),
+            "relaxation_cap_30000": (["solver.relaxation_max_steps=30000"], None)}
 EXPECTED = {
     "seed_1_completed true true PASS", "seed_1_surface_crack_count_change 1 +-1 PASS",
     "seed_1_mean_surface_width_rel_change 0.0999 0.1 PASS",
@@ -41,9 +47,16 @@ def summary(completed, count, width):
             "right_end_displacement_m": -4.7e-4}
 
 
-def robustness(out):
-    proc = subprocess.run([sys.executable, str(REPO / "verification" / "peron" / "robustness.py"), str(out)],
-                          capture_output=True, text=True)
+def resolved(ydry, overrides):
+    """The shipped Peron deck with the overrides as `ydry check` prints it (a run's deck.toml)."""
+    cmd = [str(ydry), "check", str(REPO / "inputs" / "peron" / "peron.toml")]
+    return subprocess.run(cmd + [a for o in overrides for a in ("--set", o)], check=True, capture_output=True,
+                          text=True).stdout
+
+
+def robustness(out, ydry):
+    proc = subprocess.run([sys.executable, str(REPO / "verification" / "peron" / "robustness.py"), str(out),
+                           "--ydry", str(ydry)], capture_output=True, text=True)
     verdicts = {line.split(" ", 1)[1] for line in proc.stdout.splitlines() if line.startswith("peron_robustness ")}
     return proc, verdicts
 
@@ -57,19 +70,18 @@ def main():
                         "--ydry", str(args.ydry), "--slurm-only"], check=True, capture_output=True)
         reference = out / "relaxation_cap_15000"
         reference.mkdir()
-        deck = subprocess.run([str(args.ydry), "check", str(REPO / "inputs" / "peron" / "peron.toml")],
-                              check=True, capture_output=True, text=True).stdout
-        (reference / "deck.toml").write_text(deck)
+        (reference / "deck.toml").write_text(resolved(args.ydry, []))
         (reference / "summary.json").write_text(json.dumps(summary(False, 7, WIDTH)))
-        proc, _ = robustness(out)
+        proc, _ = robustness(out, args.ydry)
         if proc.returncode != 2:
             failures.append(f"an unfinished reference run: exit {proc.returncode}, not 2")
         (reference / "summary.json").write_text(json.dumps(summary(True, 7, WIDTH)))
-        for folder, figures in VARIANTS.items():
+        for folder, (overrides, figures) in VARIANTS.items():
             (out / folder).mkdir()
+            (out / folder / "deck.toml").write_text(resolved(args.ydry, overrides))
             if figures is not None:
                 (out / folder / "summary.json").write_text(json.dumps(summary(*figures)))
-        proc, verdicts = robustness(out)
+        proc, verdicts = robustness(out, args.ydry)
         print(proc.stdout, end="")
         if proc.returncode != 1:
             failures.append(f"exit {proc.returncode}, not 1: {proc.stderr}")

@@ -3,9 +3,10 @@
 count within +-1 and its mean final width within 10 %?
 
 Reads a folder that `make robustness` (scripts/sweep.py on verification/peron/robustness/*.toml)
-filled: OUT/sweep.json names the runs. The reference is the run whose resolved deck.toml sets
-every key of inputs/peron/peron.toml as the deck does (the shipped deck, shared by the
-relaxation and mesh studies); every other run is a variant: three seeds of a 5 % strength
+filled: OUT/sweep.json names the runs. The reference is the run whose deck.toml is the shipped
+deck inputs/peron/peron.toml as `ydry check` resolves it, every value alike (defaults included;
+the mesh compared by its contents), the run the relaxation and mesh studies share; every other
+run is a variant: three seeds of a 5 % strength
 heterogeneity, the relaxation cap doubled, the element size halved. Each variant's
 surface_crack_count and mean_surface_crack_width_m (summary.json, the figures the experiment
 measures) are compared with the reference's, and printed beside the experiment's (7 cracks,
@@ -13,18 +14,19 @@ measures) are compared with the reference's, and printed beside the experiment's
 Prints `peron_robustness METRIC VALUE TOLERANCE PASS|FAIL` (METRIC names the variant) and exits
 1 if a check fails, 2 if OUT has no sweep.json or no completed reference run.
 
-    verification/peron/robustness.py runs/robustness
+    verification/peron/robustness.py runs/robustness [--ydry build/ydry]
 """
 import json
 import math
 import sys
-import tomllib
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 sys.path.insert(0, str(HERE))
-import check  # noqa: E402  (DECK, deck_differences, number, CRACKS, MEAN_WIDTH, MM)
+sys.path.insert(0, str(HERE.parents[1] / "scripts"))
+import check  # noqa: E402  (DECK, number, CRACKS, MEAN_WIDTH, MM)
+import sweep  # noqa: E402  (resolved_deck, deck_key: how sweep.py tells decks apart)
 import ydry_case  # noqa: E402
 
 COUNT_TOLERANCE = 1     # cracks, against the reference run
@@ -42,23 +44,27 @@ def runs_of(out):
     return runs
 
 
-def figures(folder):
-    """(summary.json, whether its deck.toml is the shipped deck's) of a run folder, or None if
-    the run has not written its summary yet."""
+def figures(folder, shipped_key):
+    """(summary.json, whether its deck.toml is the shipped deck) of a run folder, or None if the
+    run has not written its summary yet."""
     if not (folder / "summary.json").is_file():
         return None
-    differences = check.deck_differences(folder, tomllib.loads(check.DECK.read_text()))
-    return json.loads((folder / "summary.json").read_text()), differences == []
+    deck = folder / "deck.toml"
+    is_shipped = deck.is_file() and sweep.deck_key(deck.read_text()) == shipped_key
+    return json.loads((folder / "summary.json").read_text()), is_shipped
 
 
 def main():
     parser = ydry_case.script_parser(__doc__)
     parser.add_argument("out", type=Path, help="the folder of the robustness runs (sweep.json)")
+    parser.add_argument("--ydry", type=Path, default=ydry_case.REPO / "build" / "ydry",
+                        help="resolves the shipped deck (ydry check)")
     args = parser.parse_args()
     if not (args.out / "sweep.json").is_file():
         print(f"robustness: {args.out} has no sweep.json (run `make robustness` first)", file=sys.stderr)
         return 2
-    runs = {name: (what, figures(args.out / name)) for name, what in runs_of(args.out).items()}
+    shipped_key = sweep.deck_key(sweep.resolved_deck(args.ydry, str(check.DECK), []))
+    runs = {name: (what, figures(args.out / name, shipped_key)) for name, what in runs_of(args.out).items()}
     reference = [name for name, (_, found) in runs.items() if found is not None and found[1]]
     if not reference or not runs[reference[0]][1][0]["completed"]:
         print(f"robustness: {args.out} has no completed run of the shipped deck to compare with", file=sys.stderr)
