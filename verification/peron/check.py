@@ -21,7 +21,9 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
+sys.path.insert(0, str(HERE.parents[1] / "scripts"))
 import run_report  # noqa: E402
+import sweep  # noqa: E402  (resolved_deck, deck_key: how sweep.py tells decks apart)
 import ydry_case  # noqa: E402
 
 DECK = ydry_case.REPO / "inputs" / "peron" / "peron.toml"
@@ -63,21 +65,21 @@ def flat(table, prefix=""):
     return leaves
 
 
-def deck_differences(outdir, deck):
-    """The keys the shipped deck sets whose value differs in the run's resolved deck.toml, as
-    `key = run value (deck value)` strings (defaults the shipped deck leaves out are not
-    compared); None if the run has no deck.toml."""
+def deck_differences(outdir, ydry):
+    """Every value of the run's deck.toml that differs from the shipped deck as `ydry check`
+    resolves it (defaults included; the mesh compared by its contents, numbers by value), as
+    `key = run value (deck value)` strings; None if the run has no deck.toml or ydry cannot
+    resolve the deck."""
     path = outdir / "deck.toml"
+    try:
+        shipped_text = sweep.resolved_deck(ydry, str(DECK), [])
+    except (OSError, sweep.SweepError):
+        return None
     if not path.is_file():
         return None
-    used = flat(tomllib.loads(path.read_text()))
-    shipped = flat(deck)
-    # The resolved deck names the mesh by its absolute path; the shipped one beside the deck.
-    if "mesh.file" in shipped and "mesh.file" in used and \
-            (DECK.parent / shipped["mesh.file"]).resolve() == Path(used["mesh.file"]).resolve():
-        used["mesh.file"] = shipped["mesh.file"]
-    return [f"{key} = {json.dumps(used[key]) if key in used else '(missing)'} (deck {json.dumps(value)})"
-            for key, value in shipped.items() if used.get(key) != value]
+    used, shipped = (flat(json.loads(sweep.deck_key(text))) for text in (path.read_text(), shipped_text))
+    return [f"{key} = {json.dumps(used.get(key, '(missing)'))} (deck {json.dumps(shipped.get(key, '(missing)'))})"
+            for key in sorted(set(used) | set(shipped)) if used.get(key) != shipped.get(key)]
 
 
 def final_cracks(run, t, size):
@@ -139,15 +141,16 @@ def print_cracks(cracks):
         print(f"# {k:5d} {crack['x'] * MM:8.2f} {crack['width'] * MM:11.4f} {crack['first']:15g}  {sides}")
 
 
-def check_run(run, outdir, verdicts):
+def check_run(run, outdir, verdicts, ydry):
     s, series, surface = run["summary"], run["series"], run["surface"]
     deck = tomllib.loads(DECK.read_text())
     print(f"# run {outdir}: ydry {s['version']}, {s['threads']} threads, wall {s['wall_s']:.0f} s, "
           f"{s['elements']} elements, {s['moisture_steps']} moisture steps")
-    differences = deck_differences(outdir, deck)
+    differences = deck_differences(outdir, ydry)
     deck_name = DECK.relative_to(ydry_case.REPO)
-    print(f"# the run has no deck.toml to compare with {deck_name}" if differences is None else
-          f"# the run's deck.toml sets every key of {deck_name} as it does" if not differences else
+    print(f"# the run's deck.toml could not be compared with {deck_name} (no deck.toml, or {ydry} check failed)"
+          if differences is None else
+          f"# the run's deck.toml is {deck_name} as ydry resolves it, every value alike" if not differences else
           f"# the run's deck.toml differs from {deck_name}: " + "; ".join(differences))
     done = bool(s["completed"])
     if not done:
@@ -225,7 +228,7 @@ def main():
         print(f"peron: {outdir} has no cracks.csv or no surface.csv rows: not a run of the Peron "
               "deck (mechanics on, a boundary named top)", file=sys.stderr)
         return 2
-    check_run(run, outdir, verdicts)
+    check_run(run, outdir, verdicts, args.ydry)
     return verdicts.exit_code()
 
 
