@@ -11,7 +11,7 @@ packages=(
   libeigen3-dev libmetis-dev libvtk9-dev catch2 libtomlplusplus-dev libcli11-dev
   gmsh
   python3 python3-numpy python3-matplotlib python3-vtk9
-  xvfb  # Debian's VTK renders through X only: scripts/render_frame.py runs under xvfb-run
+  xvfb  # Debian's VTK renders through X only: scripts/virtual_display.py starts an Xvfb
 )
 with_paraview=0
 for arg in "$@"; do
@@ -71,7 +71,7 @@ if [ "$with_paraview" -eq 1 ] && ! dpkg-query -W -f='${Status}' python3-paraview
 #!/bin/sh
 # pvpython for Debian 12 beside python3-vtk9, written by ydry's scripts/install-deps.sh:
 # ParaView's pvbatch running a script on python3-paraview $version, unpacked in $prefix.
-# Without a display, run it as \`xvfb-run -a pvpython SCRIPT.py\`.
+# Without a display, run it as \`scripts/virtual_display.py pvpython SCRIPT.py\` (in ydry).
 PYTHONPATH=$prefix/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH} exec /usr/bin/pvbatch "\$@"
 EOF
     $sudo chmod 755 "$launcher"

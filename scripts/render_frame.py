@@ -10,11 +10,11 @@ opening), with the element edges and a scale bar; its box is outlined in the top
     scripts/render_frame.py runs/drying_layer                       # last frame
     scripts/render_frame.py runs/drying_layer --time 60000 --warp 20 --out t60000.png
 
-Debian's VTK renders through X: with no DISPLAY the script runs itself again under
-`xvfb-run -a` (package xvfb).
+Debian's VTK renders through X: with no DISPLAY the script renders on a private Xvfb display
+(scripts/virtual_display.py, package xvfb).
 """
+import contextlib
 import os
-import shutil
 import sys
 from pathlib import Path
 
@@ -34,6 +34,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtk
                                          vtkTextActor, vtkWindowToImageFilter)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
+import virtual_display  # noqa: E402  (beside this script)
 import ydry_case  # noqa: E402  (script_parser, frames, read_grid, corners, crack_displacement)
 
 CRACK_COLOR = (1.0, 0.0, 1.0)
@@ -54,14 +55,18 @@ def arguments():
     return parser.parse_args()
 
 
-def ensure_display():
-    """An X render window needs a display: without one, run again under xvfb-run."""
+@contextlib.contextmanager
+def display_for_rendering():
+    """An X render window needs a display: without one, a private Xvfb for as long as this lasts."""
     if os.environ.get("DISPLAY") or vtkRenderWindow().GetClassName() != "vtkXOpenGLRenderWindow":
+        yield
         return
-    if shutil.which("xvfb-run") and "RENDER_FRAME_XVFB" not in os.environ:
-        os.environ["RENDER_FRAME_XVFB"] = "1"
-        os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
-    sys.exit("render_frame: no DISPLAY and no xvfb-run; install xvfb or run under a display")
+    try:
+        with virtual_display.virtual_display() as display:
+            os.environ["DISPLAY"] = display
+            yield
+    except virtual_display.DisplayError as error:
+        sys.exit(f"render_frame: no DISPLAY, and {error}")
 
 
 def warped(grid, warp):
@@ -246,9 +251,8 @@ def write_png(window, path):
     writer.Write()
 
 
-def main():
-    args = arguments()
-    ensure_display()
+def render(args):
+    """Render the frame args ask for to its PNG; return the PNG's path and the frame's time."""
     pvd = args.run if args.run.suffix == ".pvd" else next(args.run.glob("*.pvd"))
     frames = ydry_case.frames(pvd)
     time = max(frames) if args.time is None else min(frames, key=lambda t: abs(t - args.time))
@@ -276,6 +280,13 @@ def main():
     window.Render()
     out = args.out or pvd.parent / f"{pvd.stem}_t{time:g}.png"
     write_png(window, out)
+    return out, time
+
+
+def main():
+    args = arguments()
+    with display_for_rendering():
+        out, time = render(args)
     print(f"render_frame: {out} (t = {time:g} s)")
 
 

@@ -2,7 +2,8 @@
 """Verification case paraview: ParaView opens a run's .pvd as its users will (issue 8, item 5).
 
 Runs ydry on the demo deck made to crack early and cut short (frames at 0, 4000 and 8000 s, and
-at the end time, 10000 s, off that grid), then check_pvd.py under `xvfb-run -a pvpython`, and
+at the end time, 10000 s, off that grid), then check_pvd.py with pvpython on a private Xvfb display
+(scripts/virtual_display.py), and
 checks what ParaView's PVDReader delivered: the time values it offers are the ones the .pvd
 lists and those run.output_interval implies; at each, the data carries that time, the solid
 part (0) has 3 points per triangle and summary.json's triangles with the point arrays moisture,
@@ -10,7 +11,7 @@ displacement, velocity and the cell arrays material, moisture, stress, and the c
 one line cell per broken joint of series.csv at that time with opening, slip, moisture_face1,
 moisture_face2 and strength_factor, every value finite. The PNG of the last frame (the solid
 coloured by moisture, the cracks in black) must have the size asked for, a colour map's range
-of colours and black crack lines across the layer. Needs pvpython and xvfb-run
+of colours and black crack lines across the layer. Needs pvpython and Xvfb
 (scripts/install-deps.sh --with-paraview). Prints `paraview METRIC VALUE TOLERANCE PASS|FAIL`
 and exits 1 if a check fails.
 """
@@ -29,6 +30,8 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
+sys.path.insert(0, str(HERE.parents[1] / "scripts"))
+import virtual_display  # noqa: E402
 import ydry_case  # noqa: E402
 
 OVERRIDES = ["run.end_time=10000", "run.output_interval=4000", "run.series_interval=2000",
@@ -43,6 +46,9 @@ MIN_COLOURS = 100                # a colour map's gradient, not a blank or flat 
 MIN_COLOURED_FRACTION = 0.10     # of the picture: the layer in colour (about 0.3 of it)
 LAYER_ROWS = 0.6                 # the top 60 % of the picture: the layer, above the scalar bar
 CLIENT_TIMEOUT_S = 120
+# What pvbatch prints when it cannot open its X display: the only failure run again (once, on a
+# new display), as it says nothing about ydry's files (seen once in CI under xvfb-run -a).
+DISPLAY_REFUSED = "bad X server connection"
 
 
 def expected_frame_times(deck):
@@ -119,17 +125,18 @@ def check_picture(verdicts, png):
 
 
 def run_client(command):
-    """Run the ParaView client in a process group of its own, so that a timeout ends xvfb-run,
-    its X server and pvpython together; return its exit code ("timeout" if it ran out of time)
+    """Run the ParaView client on a display of its own, in a process group of its own so that a
+    timeout ends it and all it started; return its exit code ("timeout" if it ran out of time)
     and its output."""
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                            start_new_session=True)
-    try:
-        output = proc.communicate(timeout=CLIENT_TIMEOUT_S)[0]
-        return proc.returncode, output
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        return "timeout", proc.communicate()[0]
+    with virtual_display.virtual_display() as display:
+        proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                start_new_session=True, env={**os.environ, "DISPLAY": display})
+        try:
+            output = proc.communicate(timeout=CLIENT_TIMEOUT_S)[0]
+            return proc.returncode, output
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            return "timeout", proc.communicate()[0]
 
 
 def main():
@@ -138,9 +145,9 @@ def main():
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     verdicts = ydry_case.Verdicts("paraview")
-    client = [shutil.which("xvfb-run"), shutil.which(args.pvpython)]
+    client = [shutil.which("Xvfb"), shutil.which(args.pvpython)]
     if not verdicts.check("client_found", all(client), "true", all(client)):
-        print(f"info: xvfb-run {client[0]}, pvpython {client[1]}: "
+        print(f"info: Xvfb {client[0]}, pvpython {client[1]}: "
               "install them with scripts/install-deps.sh --with-paraview")
         return verdicts.exit_code()
 
@@ -152,9 +159,13 @@ def main():
     pvd, found, png = run / "drying_layer.pvd", args.out / "paraview.json", args.out / "last_frame.png"
     found.unlink(missing_ok=True)
     png.unlink(missing_ok=True)
+    command = [client[1], str(HERE / "check_pvd.py"), str(pvd), "--json", str(found), "--png", str(png),
+               "--size", IMAGE_SIZE]
     start = time.perf_counter()
-    code, output = run_client([client[0], "-a", client[1], str(HERE / "check_pvd.py"), str(pvd),
-                               "--json", str(found), "--png", str(png), "--size", IMAGE_SIZE])
+    code, output = run_client(command)
+    if code != 0 and DISPLAY_REFUSED in output:
+        print(f"info: pvbatch could not open its display ({DISPLAY_REFUSED}); running it once more")
+        code, output = run_client(command)
     wall = time.perf_counter() - start
     if not verdicts.check("client_exit_code", code, 0, code == 0 and found.is_file()):
         print(output)

@@ -3,7 +3,7 @@
 Run it with ParaView's Python, under a virtual display (Debian's pvpython and pvbatch crash
 without one, even with --force-offscreen-rendering):
 
-    xvfb-run -a pvpython check_pvd.py RUN/NAME.pvd --json found.json --png last.png --size 1600x400
+    scripts/virtual_display.py pvpython check_pvd.py RUN/NAME.pvd --json found.json --png last.png --size 1600x400
 
 Opens the .pvd with ParaView's PVDReader, steps through every time value it offers and writes,
 as JSON, what ParaView delivers at each: the data's own time, and for each part (0: the solid,
