@@ -162,6 +162,24 @@ TEST_CASE("a non-empty output folder that is not a ydry run is refused without -
   CHECK(ydry_test::read_text(dir.file("out/thesis.tex")) == "precious");
 }
 
+TEST_CASE("a wrong output path is refused before the set-up, and a failed set-up leaves no folder", "[deck]") {
+  // The shipped Peron deck beside a mesh file that is not a mesh: the set-up would fail on it
+  // (and with a real mesh, spend seconds on the initial equilibrium), so the output path's
+  // error can only come first if it is checked first.
+  ydry_test::TempDir dir;
+  std::filesystem::copy_file(YDRY_SOURCE_DIR "/inputs/peron/peron.toml", dir.file("peron.toml"));
+  ydry_test::write_text(dir.file("peron.msh"), "not a mesh\n");
+  ydry_test::write_text(dir.file("a_file"), "");
+  const auto onto_a_file = run_ydry(dir.file("peron.toml") + " -o " + dir.file("a_file") + " --quiet");
+  CHECK(onto_a_file.exit_code == 2);
+  CHECK(onto_a_file.output.find("output path exists and is not a folder") != std::string::npos);
+  CHECK(onto_a_file.output.find("mesh.file") == std::string::npos);
+  const auto bad_mesh = run_ydry(dir.file("peron.toml") + " -o " + dir.file("new") + " --quiet");
+  CHECK(bad_mesh.exit_code == 2);
+  CHECK(bad_mesh.output.find("mesh.file") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.file("new")));
+}
+
 TEST_CASE("ydry check validates a deck without running it and prints the resolved deck", "[deck]") {
   ydry_test::TempDir dir;
   ydry_test::write_text(dir.file("deck.toml"), kGoodDeck);

@@ -75,15 +75,19 @@ std::optional<std::string> read_file(const std::string& path) {
   return bytes.str();
 }
 
-void prepare_output_dir(const std::string& outdir, bool force) {
+void check_output_dir(const std::string& outdir, bool force) {
   const fs::path dir(outdir);
   if (fs::exists(dir) && !fs::is_directory(dir))
     throw InputError(outdir + ": output path exists and is not a folder");
-  const bool ours = fs::exists(dir / kMarker);
-  if (fs::exists(dir) && !fs::is_empty(dir) && !ours && !force)
+  if (fs::exists(dir) && !fs::is_empty(dir) && !fs::exists(dir / kMarker) && !force)
     throw InputError(outdir + ": output folder is not empty and holds no earlier ydry run "
                               "(use --force to write into it anyway)");
-  if (ours) {  // an earlier run's outputs would mix with this run's: remove them
+}
+
+void prepare_output_dir(const std::string& outdir, bool force) {
+  check_output_dir(outdir, force);
+  const fs::path dir(outdir);
+  if (fs::exists(dir / kMarker)) {  // an earlier run's outputs would mix with this run's: remove them
     for (const auto& entry : fs::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
       const std::string ext = entry.path().extension().string();
@@ -96,13 +100,18 @@ void prepare_output_dir(const std::string& outdir, bool force) {
   write_file_atomically((dir / kMarker).string(), "This folder holds ydry output; ydry may overwrite it.\n");
 }
 
-void resume_output_dir(const std::string& outdir, const std::string& deck_text) {
+void check_resume_dir(const std::string& outdir, const std::string& deck_text) {
   const fs::path dir(outdir);
   if (!fs::exists(dir / kMarker))
     throw InputError(outdir + ": holds no ydry run to continue (a restart writes into the run's own output folder, "
                               "which holds the frames written before the checkpoint)");
   if (read_file((dir / "deck.toml").string()) != deck_text)
     throw InputError(outdir + ": holds another run than the checkpoint's (its deck.toml is not the checkpoint's)");
+}
+
+void resume_output_dir(const std::string& outdir, const std::string& deck_text) {
+  check_resume_dir(outdir, deck_text);
+  const fs::path dir(outdir);
   for (const fs::path& folder : {dir, dir / "frames", dir / "checkpoints"}) {
     if (!fs::is_directory(folder)) continue;
     for (const auto& entry : fs::directory_iterator(folder))

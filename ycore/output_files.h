@@ -20,13 +20,19 @@ std::optional<std::string> read_file(const std::string& path);
 // A number as the CSV files write it: round-trip precision (%.17g), "nan" for NaN.
 std::string format_double(double v);
 
-// Makes OUTDIR ready: creates it, or accepts it when empty or holding an earlier ydry run
-// (whose outputs are then removed); refuses anything else unless `force`. InputError.
+// InputError unless OUTDIR can take a new run: absent, empty, or holding an earlier ydry run,
+// or anything else with `force`. Changes nothing: run() calls it before the set-up (the
+// initial equilibrium can take minutes), so a wrong -o is reported at once.
+void check_output_dir(const std::string& outdir, bool force);
+// Makes OUTDIR ready after check_output_dir: creates it, and removes an earlier run's outputs.
 void prepare_output_dir(const std::string& outdir, bool force);
 
-// Makes a run's own OUTDIR ready for its restart: InputError unless it holds a ydry run whose
-// deck.toml is `deck_text`; removes the temporary files a killed process may have left
-// (NAME.tmp, in it, frames/ and checkpoints/), and keeps everything else for the restart.
+// InputError unless OUTDIR holds a ydry run whose deck.toml is `deck_text`, the run a
+// checkpoint continues. Changes nothing (called before the set-up, like check_output_dir).
+void check_resume_dir(const std::string& outdir, const std::string& deck_text);
+// Makes a run's own OUTDIR ready for its restart after check_resume_dir: removes the temporary
+// files a killed process may have left (NAME.tmp, in it, frames/ and checkpoints/), and keeps
+// everything else for the restart.
 void resume_output_dir(const std::string& outdir, const std::string& deck_text);
 
 // The columns of series.csv, in order (DESIGN section 5); summary.json repeats the last row.

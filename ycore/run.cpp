@@ -298,14 +298,18 @@ int run(const RunOptions& opt) {
   const Deck deck = restart ? checkpoint_deck(checkpoint, opt.restart_path, opt.deck_path, opt.overrides)
                             : load_deck(opt.deck_path, opt.overrides);
   const std::string deck_text = restart ? checkpoint_deck_text(checkpoint) : resolved_deck_text(deck);
+  const std::string outdir = !opt.outdir.empty() ? opt.outdir
+                             : restart           ? run_folder_of(opt.restart_path)
+                                                 : "runs/" + deck.name;
+  if (restart)
+    check_resume_dir(outdir, deck_text);
+  else
+    check_output_dir(outdir, opt.force);
   Progress progress;  // wall time counts the set-up too: it holds the initial equilibrium
   progress.start(deck.end_time_s, opt.quiet, opt.progress_every_s);
   State state = restart ? state_from_checkpoint(deck, checkpoint) : setup_state(deck);
   RunRecord record = restart ? checkpoint_record(checkpoint, deck, state) : RunRecord{};
   progress.start_time_s = state.time_s;
-  const std::string outdir = !opt.outdir.empty() ? opt.outdir
-                             : restart           ? run_folder_of(opt.restart_path)
-                                                 : "runs/" + deck.name;
   if (restart)
     resume_output_dir(outdir, deck_text);
   else
