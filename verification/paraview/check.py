@@ -127,7 +127,14 @@ def check_picture(verdicts, png):
 def run_client(command):
     """Run the ParaView client on a display of its own, in a process group of its own so that a
     timeout ends it and all it started; return its exit code ("timeout" if it ran out of time)
-    and its output."""
+    and its output ("no display" and Xvfb's output when Xvfb does not start)."""
+    try:
+        return run_on_display(command)
+    except virtual_display.DisplayError as error:
+        return "no display", str(error)
+
+
+def run_on_display(command):
     with virtual_display.virtual_display() as display:
         proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                                 start_new_session=True, env={**os.environ, "DISPLAY": display})
