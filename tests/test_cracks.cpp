@@ -171,6 +171,27 @@ TEST_CASE("an internal crack is measured at its highest vertex", "[crack]") {
   CHECK_FALSE(cracks[0].penetrating);
 }
 
+TEST_CASE("a crack pressed shut or slid shut is a closed crack: counted apart, not among the cracks", "[crack]") {
+  // The internal crack of the case above, its first triangle's side moved 50 um: against the
+  // other face (opening -50 um), or along the crack (slip 50 um, opening 0), or away from it.
+  for (const char* motion : {"pressed", "slid", "opened"}) {
+    State s = rectangle_state();
+    REQUIRE(break_vertical(s, 0.02, 0.005, 0.01) == 1);
+    const index_t* n = &s.joints.node[4 * first_broken(s)];
+    const double nx = s.nodes.y0[n[0]] < s.nodes.y0[n[1]] ? -1.0 : 1.0;  // into the first triangle
+    for (const int k : {0, 1}) {
+      if (motion == std::string("slid")) s.nodes.y[n[k]] += 50e-6;
+      else s.nodes.x[n[k]] += (motion == std::string("pressed") ? -50e-6 : 50e-6) * nx;
+    }
+    INFO(motion);
+    const bool open = motion == std::string("opened");
+    CHECK(find_cracks(s, 1e-5).size() == (open ? 1u : 0u));
+    CHECK(count_closed_cracks(s, 1e-5) == (open ? 0 : 1));
+    CHECK(find_all_cracks(s).size() == 1u);
+  }
+  CHECK(count_closed_cracks(two_crack_state(), 1e-5) == 0);
+}
+
 TEST_CASE("a crack reaching the top splits its surface vertex into two points on two segments", "[crack][surface]") {
   // Top edges of the 40 mm rectangle: vertices every 5 mm. The x = 10 mm crack (upper half,
   // 200 um) and the x = 30 mm one (full height, 80 um) reach the top; a third through the

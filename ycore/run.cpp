@@ -118,6 +118,7 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   j.integer("joints", static_cast<long long>(s.joints.size()));
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
   j.integer("moisture_steps", static_cast<long long>(s.moisture_steps));
+  if (deck.mechanics) j.integer("closed_crack_count", count_closed_cracks(s, deck.crack_width_threshold_m));
   j.boolean("completed", completed);
   return j;
 }

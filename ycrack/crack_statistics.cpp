@@ -97,7 +97,7 @@ bool in_process_zone(const Joints& joints, std::size_t j) {
 
 }  // namespace
 
-std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
+std::vector<Crack> find_all_cracks(const State& s) {
   const Nodes& n = s.nodes;
   const Joints& joints = s.joints;
   const index_t nvertices =
@@ -168,12 +168,23 @@ std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
   }
   for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].x_m /= corners_at_mouth[k];
 
-  cracks.erase(std::remove_if(cracks.begin(), cracks.end(),
-                              [&](const Crack& c) { return !(c.width_m > width_threshold_m); }),
-               cracks.end());
   std::stable_sort(cracks.begin(), cracks.end(),
                    [](const Crack& a, const Crack& b) { return a.x_m < b.x_m; });
   return cracks;
+}
+
+std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
+  std::vector<Crack> cracks = find_all_cracks(s);
+  cracks.erase(std::remove_if(cracks.begin(), cracks.end(),
+                              [&](const Crack& c) { return !(c.width_m > width_threshold_m); }),
+               cracks.end());
+  return cracks;
+}
+
+int count_closed_cracks(const State& s, double width_threshold_m) {
+  const std::vector<Crack> cracks = find_all_cracks(s);
+  return int(std::count_if(cracks.begin(), cracks.end(),
+                           [&](const Crack& c) { return !(c.width_m > width_threshold_m); }));
 }
 
 CrackSummary summarize_cracks(const std::vector<Crack>& cracks) {

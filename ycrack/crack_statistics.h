@@ -21,7 +21,7 @@ struct Crack {
 // crack (z(0.5) = 0.30: it carries less than a third of its strength).
 constexpr double kProcessZoneDamage = 0.5;
 
-// The cracks wider than width_threshold_m, ordered by x_m. Open joints sharing a mesh vertex
+// Every crack, however wide or closed, ordered by x_m. Open joints sharing a mesh vertex
 // belong to one crack: broken joints, and joints in a crack's process zone (two of three
 // points at D >= kProcessZoneDamage), which link the broken stretches of a crack that
 // zig-zags; a set of open joints without a broken one is no crack. Length and penetration
@@ -32,7 +32,15 @@ constexpr double kProcessZoneDamage = 0.5;
 // an interface between materials (an edge two triangles share without a joint: a crack opening
 // from a base), else its highest vertex (an internal crack). Penetrating: some vertex within 1e-6 of the layer height of
 // the lowest initial y of the joint's material. O(nodes log nodes + joints), deterministic.
+std::vector<Crack> find_all_cracks(const State& state);
+
+// The cracks wider than width_threshold_m (those of find_all_cracks), ordered by x_m.
 std::vector<Crack> find_cracks(const State& state, double width_threshold_m);
+
+// The cracks no wider than width_threshold_m: closed again after opening (their faces pressed
+// together, or slid along each other), or never opened past the threshold. They still block
+// the moisture and hold broken joints, but series.csv and cracks.csv do not count them.
+int count_closed_cracks(const State& state, double width_threshold_m);
 
 // All cracks, and those that open on the top surface: the cracks an experimenter counts and
 // measures from above (paper Fig. 19: seven surface cracks; a crack rising from the base is

@@ -166,6 +166,9 @@ def check_run(run, outdir, verdicts, ydry):
     count = s["surface_crack_count"]
     print(f"# cracks: {count} open on the top surface, {s['crack_count']} in all (the others rise from "
           f"the base), mean width of all {number(s['mean_crack_width_m']) * MM:.4f} mm")
+    if "closed_crack_count" in s:  # runs of ydry before this field have not
+        print(f"# closed cracks (mouth no wider than run.crack_width_threshold, counted in neither): "
+              f"{s['closed_crack_count']}")
     verdicts.check("surface_crack_count", count, f"{CRACKS}+-{CRACKS_TOLERANCE}",
                    abs(count - CRACKS) <= CRACKS_TOLERANCE)
 
