@@ -5,7 +5,8 @@ Each entry of a sweep is one run, `ydry DECK -o OUT/NAME_VALUE --force --quiet -
 own folder. Runs whose summary.json says `completed` (and whose deck.toml is the deck this
 sweep would run now) are skipped, an unfinished one goes on from its newest checkpoint
 (`ydry --restart`), so the same command resumes a sweep after an interruption; entries that
-resolve to the same deck share one run. Ctrl-C (or SIGTERM) makes every running ydry end its
+resolve to the same deck share one run, as does an entry whose deck another folder of OUT has
+completed (an earlier sweep into the same OUT ran it). Ctrl-C (or SIGTERM) makes every running ydry end its
 coupling step and write a checkpoint (Ctrl-C again: at once), waits for them and exits 130.
 Writes OUT/sweep.json (the sweeps and their run folders, read by scripts/plot_sweep.py) and
 OUT/sweep.slurm (the same runs as a SLURM job array: one array task per run).
@@ -224,16 +225,34 @@ def resolved_deck(ydry, deck, overrides):
     return proc.stdout
 
 
+def completed_runs(out):
+    """{deck_key: folder name} of the completed ydry runs in OUT's folders (the first by name
+    where two ran the same deck)."""
+    found = {}
+    for summary in sorted(out.glob("*/summary.json")) if out.is_dir() else []:
+        try:
+            if json.loads(summary.read_text()).get("completed") is True:
+                found.setdefault(deck_key((summary.parent / "deck.toml").read_text()), summary.parent.name)
+        except (OSError, json.JSONDecodeError, tomllib.TOMLDecodeError):
+            continue  # not a run this sweep can reuse
+    return found
+
+
 def plan_runs(sweeps, out, ydry, extra):
     """The distinct runs of the sweeps, each {folder, path, deck, overrides, deck_key, end_time},
     and the entries that share one: an entry whose resolved deck is an earlier entry's shares
-    that run (its folder becomes the run's), listed as (its own folder name, the run's)."""
+    that run, and so does one whose deck some other folder of OUT has completed (a sweep file
+    run alone after another that ran the same deck), unless its own folder holds that run; its
+    folder becomes the run's, listed as (its own folder name, the run's)."""
     runs, by_deck, shared = [], {}, []
+    done = completed_runs(out)
     for sweep in sweeps:
         for entry in sweep["entries"]:
             entry["overrides"] += extra
             resolved = resolved_deck(ydry, shown(sweep["deck"]), entry["overrides"])
             key = deck_key(resolved)
+            if key not in by_deck and done.get(key, entry["folder"]) != entry["folder"]:
+                by_deck[key] = {"folder": done[key]}  # completed, so not among the runs to make
             if key in by_deck:
                 shared.append((entry["folder"], by_deck[key]["folder"]))
                 entry["folder"] = by_deck[key]["folder"]
@@ -443,6 +462,14 @@ def plan_note(run, state):
             "changed": "holds another deck's run: run again from the start"}[state]
 
 
+def print_plan(runs, states, shared):
+    """One line per run (what the sweep does with it), then one per entry that shares a run."""
+    for run in runs:
+        print(f"  {run['folder']}: {plan_note(run, states[run['folder']])}")
+    for entry, run in shared:
+        print(f"  {entry}: the deck of {run}, shares its run")
+
+
 def interrupt(signum, frame):
     raise KeyboardInterrupt
 
@@ -459,6 +486,10 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     threads = args.threads or max(1, len(os.sched_getaffinity(0)) // args.jobs)
     write_manifest(out, sweeps)
+    if not runs:
+        print(f"sweep: every value's deck has a completed run in {shown(out)}: nothing to run")
+        print_plan([], {}, shared)
+        return 0
     slurm = write_slurm(out, runs, args.ydry.resolve(), args.checkpoint_every, args.slurm_cpus or threads,
                         args.slurm_time)
     states = {run["folder"]: run_state(run) for run in runs}
@@ -470,10 +501,7 @@ def main():
     print(f"sweep: {len(runs)} runs for {entries} values into {shown(out)} ({slurm.name} written); "
           f"{len(runs) - len(todo)} completed earlier, {len(todo)} to run, {args.jobs} at a time, "
           f"{threads} thread(s) each")
-    for run in runs:
-        print(f"  {run['folder']}: {plan_note(run, states[run['folder']])}")
-    for entry, run in shared:
-        print(f"  {entry}: the deck of {run}, shares its run")
+    print_plan(runs, states, shared)
     if args.slurm_only:
         return 0
     for signum in (signal.SIGINT, signal.SIGTERM):  # SIGINT too where a shell started sweep.py ignoring it

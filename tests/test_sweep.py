@@ -12,7 +12,10 @@ A sweep file over run.end_time = 1000, 2000, 10000 and 16000 s of tests/data/swe
 3. the same sweep.py command again: runs 0, 1 and 3 are skipped (their summary.json untouched),
    run 2 goes on from its checkpoint to its end;
 4. run 1's folder removed, the SLURM task body for index 1: it makes run 1 again from the start
-   (end time 2000 s) and touches no other run.
+   (end time 2000 s) and touches no other run;
+5. another sweep file into the same folder, end times 1000 and 3000 s: the 1000 s value shares
+   the completed run strip_1000 (untouched; sweep.json points the value at it), the 3000 s one
+   runs; and a third whose values all have completed runs says there is nothing to run.
 And the shipped sweeps, inputs/sweeps/*.toml, planned without running (--slurm-only: every
 deck and override checked by ydry): 8 runs for their 9 values (E = 4 MPa and alpha = 0.08 are
 one). Exits 1 on any failure.
@@ -150,6 +153,31 @@ def main():
         # 4. The SLURM task body for index 1, from the start.
         shutil.rmtree(runs[1])
         failures += slurm_task(out, runs, 1)
+
+        # 5. Another sweep into the same folder: a value whose deck has a completed run shares it.
+        again = Path(tmp) / "again.toml"
+        again.write_text(SWEEP_FILE.replace('name = "strip"', 'name = "again"')
+                         .replace(f"values = {END_TIMES}", "values = [1000, 3000]"))
+        stamps = stamp(runs)
+        proc = subprocess.run([*command[:2], str(again), *command[3:]], capture_output=True, text=True)
+        print(proc.stdout + proc.stderr)
+        manifest = {sweep["name"]: sweep for sweep in json.loads((out / "sweep.json").read_text())["sweeps"]}
+        folders = [entry["folder"] for entry in manifest.get("again", {}).get("entries", [])]
+        if proc.returncode != 0 or "again_1000: the deck of strip_1000, shares its run" not in proc.stdout:
+            failures.append(f"the second sweep (exit {proc.returncode}) did not share strip_1000")
+        if stamp(runs) != stamps:
+            failures.append("the second sweep wrote into the first sweep's runs")
+        if folders != ["strip_1000", "again_3000"]:
+            failures.append(f"sweep.json's folders of the second sweep are {folders}")
+        failures += finished(out / "again_3000", 3000, restarted=False)
+        third = Path(tmp) / "third.toml"
+        third.write_text(SWEEP_FILE.replace('name = "strip"', 'name = "third"')
+                         .replace(f"values = {END_TIMES}", "values = [2000, 3000]"))
+        proc = subprocess.run([*command[:2], str(third), *command[3:]], capture_output=True, text=True)
+        print(proc.stdout + proc.stderr)
+        if proc.returncode != 0 or "nothing to run" not in proc.stdout:
+            failures.append(f"a sweep whose runs are all completed exited {proc.returncode} without "
+                            "saying there is nothing to run")
 
         # The shipped sweeps.
         shipped = sorted((REPO / "inputs" / "sweeps").glob("*.toml"))
