@@ -64,7 +64,10 @@ def display_for_rendering():
     try:
         with virtual_display.virtual_display() as display:
             os.environ["DISPLAY"] = display
-            yield
+            try:
+                yield
+            finally:
+                del os.environ["DISPLAY"]  # the server stops here
     except virtual_display.DisplayError as error:
         sys.exit(f"render_frame: no DISPLAY, and {error}")
 

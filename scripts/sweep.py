@@ -215,6 +215,12 @@ def deck_key(text):
     return json.dumps(deck, sort_keys=True)
 
 
+def deck_digest(text):
+    """A short fingerprint of deck_key(text), kept in sweep.json for each value: the run a
+    value's folder holds is still that value's run only while its deck.toml has it."""
+    return hashlib.sha256(deck_key(text).encode()).hexdigest()[:16]
+
+
 def resolved_deck(ydry, deck, overrides):
     """`ydry check` of the deck with the overrides: the resolved deck's text; SweepError with
     ydry's message when the deck or an override is wrong."""
@@ -233,7 +239,7 @@ def completed_runs(out):
         try:
             if json.loads(summary.read_text()).get("completed") is True:
                 found.setdefault(deck_key((summary.parent / "deck.toml").read_text()), summary.parent.name)
-        except (OSError, json.JSONDecodeError, tomllib.TOMLDecodeError):
+        except (OSError, ValueError, AttributeError):  # unreadable, not JSON or TOML, not a table
             continue  # not a run this sweep can reuse
     return found
 
@@ -251,6 +257,7 @@ def plan_runs(sweeps, out, ydry, extra):
             entry["overrides"] += extra
             resolved = resolved_deck(ydry, shown(sweep["deck"]), entry["overrides"])
             key = deck_key(resolved)
+            entry["deck_digest"] = deck_digest(resolved)
             if key not in by_deck and done.get(key, entry["folder"]) != entry["folder"]:
                 by_deck[key] = {"folder": done[key]}  # completed, so not among the runs to make
             if key in by_deck:

@@ -15,7 +15,9 @@ A sweep file over run.end_time = 1000, 2000, 10000 and 16000 s of tests/data/swe
    (end time 2000 s) and touches no other run;
 5. another sweep file into the same folder, end times 1000 and 3000 s: the 1000 s value shares
    the completed run strip_1000 (untouched; sweep.json points the value at it), the 3000 s one
-   runs; and a third whose values all have completed runs says there is nothing to run.
+   runs; and a third whose values all have completed runs says there is nothing to run. Then
+   strip_1000 is made the run of another deck (its deck.toml's end time changed): plot_sweep.py
+   must not take it for the second sweep's 1000 s value any more.
 And the shipped sweeps, inputs/sweeps/*.toml, planned without running (--slurm-only: every
 deck and override checked by ydry): 8 runs for their 9 values (E = 4 MPa and alpha = 0.08 are
 one). Exits 1 on any failure.
@@ -178,6 +180,14 @@ def main():
         if proc.returncode != 0 or "nothing to run" not in proc.stdout:
             failures.append(f"a sweep whose runs are all completed exited {proc.returncode} without "
                             "saying there is nothing to run")
+        deck = runs[0] / "deck.toml"
+        deck.write_text(deck.read_text().replace("end_time = 1000", "end_time = 1500", 1))
+        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "plot_sweep.py"), str(out), "--sweep", "again",
+                               "--out", str(Path(tmp) / "plots")], capture_output=True, text=True)
+        print(proc.stdout + proc.stderr)
+        table = Path(tmp) / "plots" / "again_table.md"
+        if not table.is_file() or "holds another deck's run" not in table.read_text():
+            failures.append("plot_sweep.py took strip_1000, now another deck's run, for the second sweep's value")
 
         # The shipped sweeps.
         shipped = sorted((REPO / "inputs" / "sweeps").glob("*.toml"))

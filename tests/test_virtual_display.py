@@ -2,13 +2,16 @@
 """scripts/virtual_display.py: clients started together each get a display of their own, ready
 when they start, and the server is gone when they end.
 
-Starts CLIENTS at once, each running a tiny client that connects to the X socket of its DISPLAY
-and prints the display name. Each must exit 0, the names must all differ (xvfb-run -a can hand
-two the same one), and after all have ended no lock file of theirs may remain. Prints
-`virtual_display METRIC VALUE TOLERANCE PASS|FAIL`; exits 1 if a check fails.
+Starts CLIENTS at once. Each connects to the X socket of its DISPLAY (refused if the server is not
+listening yet), marks itself in a shared folder, waits until all have (so all displays are held
+at the same time and no number can be reused), and prints its display. Each must exit 0, the
+names must all differ (xvfb-run -a can hand two the same one), and after all have ended no
+display's socket may remain (its server stopped). Prints `virtual_display METRIC VALUE
+TOLERANCE PASS|FAIL`; exits 1 if a check fails.
 """
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -16,17 +19,30 @@ sys.path.insert(0, str(REPO / "verification"))
 import ydry_case  # noqa: E402
 
 CLIENTS = 6
-# Connects to the display's Unix socket (refused if the server is not listening yet) and prints it.
-CLIENT = ("import os, socket; d = os.environ['DISPLAY']; "
-          "s = socket.socket(socket.AF_UNIX); s.connect('/tmp/.X11-unix/X' + d[1:]); print(d)")
+BARRIER_TIMEOUT_S = 60
+CLIENT = f"""
+import os, socket, sys, time
+from pathlib import Path
+display, here = os.environ["DISPLAY"], Path(sys.argv[1])
+s = socket.socket(socket.AF_UNIX)
+s.connect("/tmp/.X11-unix/X" + display[1:])
+(here / str(os.getpid())).touch()
+deadline = time.monotonic() + {BARRIER_TIMEOUT_S}
+while len(list(here.iterdir())) < {CLIENTS}:
+    if time.monotonic() > deadline:
+        sys.exit("the other clients never connected")
+    time.sleep(0.05)
+print(display)
+"""
 
 
 def main():
     verdicts = ydry_case.Verdicts("virtual_display")
-    runs = [subprocess.Popen([sys.executable, str(REPO / "scripts" / "virtual_display.py"),
-                              sys.executable, "-c", CLIENT], stdout=subprocess.PIPE,
-                             stderr=subprocess.STDOUT, text=True) for _ in range(CLIENTS)]
-    outputs = [run.communicate(timeout=120)[0] for run in runs]
+    with tempfile.TemporaryDirectory(prefix="ydry_displays_") as barrier:
+        runs = [subprocess.Popen([sys.executable, str(REPO / "scripts" / "virtual_display.py"),
+                                  sys.executable, "-c", CLIENT, barrier], stdout=subprocess.PIPE,
+                                 stderr=subprocess.STDOUT, text=True) for _ in range(CLIENTS)]
+        outputs = [run.communicate(timeout=120)[0] for run in runs]
     failed = [out for run, out in zip(runs, outputs) if run.returncode != 0]
     for out in failed:
         print(f"info: a client failed:\n{out}")
@@ -34,8 +50,8 @@ def main():
     displays = {out.strip() for out in outputs}
     print(f"info: displays {sorted(displays)}")
     verdicts.check("distinct_displays", len(displays), CLIENTS, len(displays) == CLIENTS)
-    left = [d for d in displays if d.startswith(":") and Path(f"/tmp/.X{d[1:]}-lock").exists()]
-    verdicts.check("locks_left", len(left), 0, not left)
+    left = [d for d in displays if d.startswith(":") and Path(f"/tmp/.X11-unix/X{d[1:]}").exists()]
+    verdicts.check("sockets_left", len(left), 0, not left)
     return verdicts.exit_code()
 
 

@@ -106,7 +106,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
   return row;
 }
 
-JsonObject summary_json(const Deck& deck, const State& s, const Series& series, double wall_s,
+JsonObject summary_json(const Deck& deck, const State& s, const Series& series, int closed_cracks, double wall_s,
                         bool completed) {
   JsonObject j;
   j.text("name", deck.name);
@@ -118,7 +118,7 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   j.integer("joints", static_cast<long long>(s.joints.size()));
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
   j.integer("moisture_steps", static_cast<long long>(s.moisture_steps));
-  if (deck.mechanics) j.integer("closed_crack_count", count_closed_cracks(s, deck.crack_width_threshold_m));
+  if (deck.mechanics) j.integer("closed_crack_count", closed_cracks);
   j.boolean("completed", completed);
   return j;
 }
@@ -344,9 +344,9 @@ int run(const RunOptions& opt) {
   const bool surface = deck.mechanics && top != state.boundary_edges.end();
   if (deck.mechanics && !surface && !restart) log.info("no surface.csv: the mesh has no boundary named \"top\"");
   SurfaceCsv surface_csv{outdir + "/surface.csv", record.surface_rows};
-  const auto write_summary = [&](bool completed) {
+  const auto write_summary = [&](bool completed, int closed_cracks) {
     write_file_atomically(outdir + "/summary.json",
-                          summary_json(deck, state, record.series, progress.wall_s(), completed).dump());
+                          summary_json(deck, state, record.series, closed_cracks, progress.wall_s(), completed).dump());
   };
   const auto write_outputs = [&](bool completed) {
     if (state.time_s >= double(record.next_frame) * deck.output_interval_s * (1.0 - 1e-12) || completed) {
@@ -354,8 +354,8 @@ int run(const RunOptions& opt) {
       if (surface) append_surface_csv(surface_csv, state.time_s, surface_profile(state, top->second));
       record.next_frame = std::uint64_t(std::lround(std::floor(state.time_s / deck.output_interval_s * (1.0 + 1e-12)))) + 1;
     }
-    const std::vector<Crack> cracks =
-        deck.mechanics ? find_cracks(state, deck.crack_width_threshold_m) : std::vector<Crack>{};
+    const CrackCensus census = deck.mechanics ? take_crack_census(state, deck.crack_width_threshold_m) : CrackCensus{};
+    const std::vector<Crack>& cracks = census.open;
     record.series.rows.push_back(series_row(state, deck, right_end, cracks));
     write_series_csv(outdir + "/series.csv", record.series);
     if (deck.mechanics) {
@@ -371,7 +371,7 @@ int run(const RunOptions& opt) {
         record.capped_reported = state.mechanics.capped_relaxations;
       }
     }
-    write_summary(completed);
+    write_summary(completed, census.closed);
   };
   if (restart) {  // the files as they were when the checkpoint was written
     write_series_csv(outdir + "/series.csv", record.series);
@@ -380,7 +380,7 @@ int run(const RunOptions& opt) {
       write_cracks_csv(cracks_csv);
     }
     if (surface) write_surface_csv(surface_csv);
-    write_summary(record.finished);
+    write_summary(record.finished, deck.mechanics ? take_crack_census(state, deck.crack_width_threshold_m).closed : 0);
   } else {
     write_outputs(false);
   }

@@ -173,18 +173,18 @@ std::vector<Crack> find_all_cracks(const State& s) {
   return cracks;
 }
 
-std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
-  std::vector<Crack> cracks = find_all_cracks(s);
-  cracks.erase(std::remove_if(cracks.begin(), cracks.end(),
-                              [&](const Crack& c) { return !(c.width_m > width_threshold_m); }),
-               cracks.end());
-  return cracks;
+CrackCensus take_crack_census(const State& s, double width_threshold_m) {
+  CrackCensus census;
+  census.open = find_all_cracks(s);
+  const auto closed = std::remove_if(census.open.begin(), census.open.end(),
+                                     [&](const Crack& c) { return !(c.width_m > width_threshold_m); });
+  census.closed = int(census.open.end() - closed);
+  census.open.erase(closed, census.open.end());
+  return census;
 }
 
-int count_closed_cracks(const State& s, double width_threshold_m) {
-  const std::vector<Crack> cracks = find_all_cracks(s);
-  return int(std::count_if(cracks.begin(), cracks.end(),
-                           [&](const Crack& c) { return !(c.width_m > width_threshold_m); }));
+std::vector<Crack> find_cracks(const State& s, double width_threshold_m) {
+  return take_crack_census(s, width_threshold_m).open;
 }
 
 CrackSummary summarize_cracks(const std::vector<Crack>& cracks) {

@@ -34,13 +34,18 @@ constexpr double kProcessZoneDamage = 0.5;
 // the lowest initial y of the joint's material. O(nodes log nodes + joints), deterministic.
 std::vector<Crack> find_all_cracks(const State& state);
 
-// The cracks wider than width_threshold_m (those of find_all_cracks), ordered by x_m.
-std::vector<Crack> find_cracks(const State& state, double width_threshold_m);
+// The cracks of find_all_cracks wider than width_threshold_m (open, ordered by x_m), and the
+// number of the others (closed): closed again after opening (their faces pressed together, or
+// slid along each other), or never opened past the threshold. Closed cracks still block the
+// moisture and hold broken joints, but series.csv and cracks.csv do not count them.
+struct CrackCensus {
+  std::vector<Crack> open;
+  int closed = 0;
+};
+CrackCensus take_crack_census(const State& state, double width_threshold_m);
 
-// The cracks no wider than width_threshold_m: closed again after opening (their faces pressed
-// together, or slid along each other), or never opened past the threshold. They still block
-// the moisture and hold broken joints, but series.csv and cracks.csv do not count them.
-int count_closed_cracks(const State& state, double width_threshold_m);
+// The open cracks of take_crack_census.
+std::vector<Crack> find_cracks(const State& state, double width_threshold_m);
 
 // All cracks, and those that open on the top surface: the cracks an experimenter counts and
 // measures from above (paper Fig. 19: seven surface cracks; a crack rising from the base is
