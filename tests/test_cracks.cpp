@@ -37,22 +37,24 @@ State rectangle_state() {
   return build_state(mesh, deck);
 }
 
-// Breaks the joints whose two ends lie in the box [x_from, x_to] x [y_from, y_to] (initial
-// positions): a vertical or horizontal line when the box is flat; returns how many.
-int break_within(State& s, double x_from, double x_to, double y_from, double y_to) {
+// The joints whose two ends lie in the box [x_from, x_to] x [y_from, y_to] (initial
+// positions): a vertical or horizontal line when the box is flat.
+std::vector<std::size_t> joints_within(const State& s, double x_from, double x_to, double y_from, double y_to) {
   const auto inside = [&](index_t c) {
     return s.nodes.x0[c] >= x_from - 1e-12 && s.nodes.x0[c] <= x_to + 1e-12 && s.nodes.y0[c] >= y_from - 1e-12 &&
            s.nodes.y0[c] <= y_to + 1e-12;
   };
-  int count = 0;
-  for (std::size_t j = 0; j < s.joints.size(); ++j) {
-    const index_t* n = &s.joints.node[4 * j];
-    if (inside(n[0]) && inside(n[1])) {
-      s.joints.broken[j] = 1;
-      ++count;
-    }
-  }
-  return count;
+  std::vector<std::size_t> found;
+  for (std::size_t j = 0; j < s.joints.size(); ++j)
+    if (inside(s.joints.node[4 * j]) && inside(s.joints.node[4 * j + 1])) found.push_back(j);
+  return found;
+}
+
+// Breaks the joints of joints_within; returns how many.
+int break_within(State& s, double x_from, double x_to, double y_from, double y_to) {
+  const std::vector<std::size_t> found = joints_within(s, x_from, x_to, y_from, y_to);
+  for (const std::size_t j : found) s.joints.broken[j] = 1;
+  return int(found.size());
 }
 
 // Breaks the joints on the vertical line x between heights y_from and y_to; returns how many.
@@ -152,6 +154,32 @@ TEST_CASE("broken stretches linked by a joint in the process zone are one crack;
       REQUIRE(cracks.size() == 2);
       CHECK(cracks[0].length_m + cracks[1].length_m == Approx(0.015).epsilon(1e-12));
     }
+  }
+}
+
+TEST_CASE("a crack that meets the top at a broken joint and, through its process zone, at a shut vertex has its mouth where it gapes", "[crack]") {
+  // On x = 20 mm: broken from the top down to 15 mm, opened 100 um. From its lower end a process
+  // zone (horizontal joint at y = 15 mm, vertical joint up to the top) reaches the top at
+  // x = 15 mm, or at x = 25 mm, where nothing opens. One side or the other has the lower vertex
+  // id, which chose the mouth (and so a width of 0) before the opening did.
+  for (const double branch_x : {0.015, 0.025}) {
+    INFO("process zone up to the top at x = " << branch_x);
+    State s = rectangle_state();
+    REQUIRE(break_vertical(s, 0.02, 0.015, kHeight) == 1);
+    s.joints.damage.assign(3 * s.joints.size(), 0.0);
+    std::vector<std::size_t> zone = joints_within(s, std::min(branch_x, 0.02), std::max(branch_x, 0.02), 0.015, 0.015);
+    const std::vector<std::size_t> up = joints_within(s, branch_x, branch_x, 0.015, kHeight);
+    zone.insert(zone.end(), up.begin(), up.end());
+    REQUIRE(zone.size() == 2);
+    for (const std::size_t j : zone)
+      for (int p = 0; p < 3; ++p) s.joints.damage[3 * j + p] = kProcessZoneDamage;
+    shift_right_of(s, 0.02, 100e-6);
+    const std::vector<Crack> cracks = find_cracks(s, 1e-5);
+    REQUIRE(cracks.size() == 1);
+    CHECK(cracks[0].joints.size() == 3);
+    CHECK(cracks[0].on_top_surface);
+    CHECK(cracks[0].width_m == Approx(100e-6).epsilon(1e-9));
+    CHECK(cracks[0].x_m == Approx(0.02).margin(100e-6));  // at x = 20 mm, not at the shut vertex
   }
 }
 

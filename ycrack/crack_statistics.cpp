@@ -69,17 +69,20 @@ std::vector<Layer> material_layers(const State& s) {
 }
 
 // The best mouth so far: a vertex on the top surface beats one on another outer surface, which
-// beats one on an interface, which beats an internal one; then the higher y0, then the lower
-// vertex id.
+// beats one on an interface, which beats an internal one; then the higher y0; then the wider
+// opening of a joint there (a crack that meets the top at a broken joint and, through its
+// process zone, at a vertex still shut is seen where it gapes); then the lower vertex id.
 struct Mouth {
   index_t vertex = kNoIndex;
   std::uint16_t material = 0;
   std::uint8_t surface = kInside;
   double y0 = 0;
+  double opening = 0;  // of the joint end that proposed this vertex, m
   bool beaten_by(const Mouth& m) const {
     if (vertex == kNoIndex) return true;
     if (m.surface != surface) return m.surface > surface;
     if (m.y0 != y0) return m.y0 > y0;
+    if (m.opening != opening) return m.opening > opening;
     return m.vertex < vertex;
   }
 };
@@ -135,15 +138,16 @@ std::vector<Crack> find_all_cracks(const State& s) {
     crack.joints.push_back(j);
     const std::uint16_t material = s.triangles.material[triangle_of(jn[0])];
     const Layer& layer = layers[material];
+    const JointKinematics kin = joint_kinematics(n, jn);
     for (int end = 0; end < 2; ++end) {
       const index_t v = n.vertex[jn[end]];
       const double y0 = n.y0[jn[end]];
-      const Mouth candidate{v, material, surface[v], y0};
+      const Mouth candidate{v, material, surface[v], y0, kin.opening[end]};
       if (mouths[k].beaten_by(candidate)) mouths[k] = candidate;
       if (!joints.broken[j]) continue;  // length and penetration count broken joints only
       if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
     }
-    if (joints.broken[j]) crack.length_m += joint_kinematics(n, jn).length;
+    if (joints.broken[j]) crack.length_m += kin.length;
   }
 
   std::vector<index_t> crack_at_mouth(nvertices, kNoIndex);

@@ -26,7 +26,8 @@ constexpr double kProcessZoneDamage = 0.5;
 // points at D >= kProcessZoneDamage), which link the broken stretches of a crack that
 // zig-zags; a set of open joints without a broken one is no crack. Length and penetration
 // count broken joints only; the mouth and the width may lie on a process-zone joint. The mouth
-// is the crack's highest vertex (by initial y) on the top surface (an edge of one triangle whose
+// is the crack's highest vertex (by initial y; of equals, the one where a joint of the crack
+// opens widest) on the top surface (an edge of one triangle whose
 // outward normal is within 45 degrees of up: what an observer sees from above), else the
 // highest on the rest of the outer boundary (a layer's end or underside), else the highest on
 // an interface between materials (an edge two triangles share without a joint: a crack opening
