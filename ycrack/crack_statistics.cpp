@@ -154,14 +154,8 @@ std::vector<Crack> find_all_cracks(const State& s) {
   for (index_t k = 0; k < cracks.size(); ++k) {
     crack_at_mouth[mouths[k].vertex] = k;
     cracks[k].on_top_surface = mouths[k].surface == kTopSurface;
-    cracks[k].width_m = -std::numeric_limits<double>::infinity();
-    for (const index_t j : cracks[k].joints) {
-      const index_t* jn = &joints.node[4 * j];
-      const JointKinematics kin = joint_kinematics(n, jn);
-      for (int end = 0; end < 2; ++end)
-        if (n.vertex[jn[end]] == mouths[k].vertex)
-          cracks[k].width_m = std::max(cracks[k].width_m, kin.opening[end]);
-    }
+    // Of the joint ends at the mouth vertex the widest proposed it (Mouth::beaten_by).
+    cracks[k].width_m = mouths[k].opening;
   }
   std::vector<int> corners_at_mouth(cracks.size(), 0);
   for (index_t c = 0; c < n.size(); ++c) {
