@@ -41,7 +41,8 @@ def load_run(folder, program):
 def track_cracks(cracks, match_m):
     """Follows each crack through the rows of cracks.csv: a crack continues the track whose
     last mouth x is nearest, within match_m, pairs taken nearest first; any other starts a new
-    track. Returns the tracks ordered by their last x, each {time, x, width, length} arrays."""
+    track. Returns the tracks ordered by their last x, each {time, x, width, length} arrays and,
+    where cracks.csv has the column, surface (1 while its mouth is on the top surface)."""
     x = cracks["x_m"]
     tracks = []  # the rows of cracks.csv of each track
     for t in np.unique(cracks["time_s"]):
@@ -54,8 +55,9 @@ def track_cracks(cracks, match_m):
                 taken_rows.add(r)
                 tracks[k].append(r)
         tracks += [[r] for r in rows if r not in taken_rows]
-    return [{"time": cracks["time_s"][rows], "x": x[rows], "width": cracks["width_m"][rows],
-             "length": cracks["length_m"][rows]} for rows in sorted(tracks, key=lambda rows: x[rows[-1]])]
+    columns = {"time": "time_s", "x": "x_m", "width": "width_m", "length": "length_m", "surface": "surface"}
+    return [{key: cracks[column][rows] for key, column in columns.items() if column in cracks}
+            for rows in sorted(tracks, key=lambda rows: x[rows[-1]])]
 
 
 def crack_tracks(run, folder, rows=None):

@@ -83,23 +83,24 @@ def deck_differences(outdir, ydry):
 
 
 def final_cracks(run, t, size):
-    """The cracks counted at time t (cracks.csv), ordered by x, each {x, width, first}: the
-    current x of the mouth and its width at t, and the first time its track (crack tracking of
-    run_report, matching within two surface elements) was seen."""
+    """The cracks counted at time t (cracks.csv), ordered by x, each {x, width, surface, first}:
+    the current x of the mouth, its width and whether it is on the top surface at t, and the
+    first time its track (crack tracking of run_report, matching within two surface elements)
+    was seen."""
     found = []
     for track in run_report.track_cracks(run["cracks"], 2.0 * size):
         at = np.flatnonzero(track["time"] == t)
         if len(at):
             found.append({"x": float(track["x"][at[0]]), "width": float(track["width"][at[0]]),
-                          "first": float(track["time"][0])})
+                          "surface": bool(track["surface"][at[0]]), "first": float(track["time"][0])})
     return sorted(found, key=lambda crack: crack["x"])
 
 
 def surface_mouths(surface, t):
     """The crack mouths on the top surface at time t (surface.csv): one per surface vertex that
     has several points (the sides of a crack, on different segments), each {x: the current x of
-    the vertex (mean of its sides), margins: the u_y of each side minus the mean u_y of its
-    block}. A block is a segment (an unbroken stretch of the surface); its mean u_y is the mean
+    the vertex (mean of its sides), gap: the horizontal distance between its sides now,
+    margins: the u_y of each side minus the mean u_y of its block}. A block is a segment (an unbroken stretch of the surface); its mean u_y is the mean
     along its length, the trapezoidal integral of u_y over x0 divided by the segment's span."""
     at = surface["time_s"] == t
     x0, y0, ux, uy, segment = (surface[k][at] for k in ("x0_m", "y0_m", "ux_m", "uy_m", "segment"))
@@ -113,30 +114,38 @@ def surface_mouths(surface, t):
     mouths = []
     for v in np.flatnonzero(count > 1):
         sides = np.flatnonzero(vertex == v)
-        mouths.append({"x": float(np.mean(x0[sides] + ux[sides])),
+        mouths.append({"x": float(np.mean(x0[sides] + ux[sides])), "gap": float(np.ptp(x0[sides] + ux[sides])),
                        "margins": [float(uy[p] - block_mean[segment[p]]) for p in sides]})
     return mouths
 
 
 def curling(cracks, mouths, size):
-    """Gives each crack its top-surface mouth (the nearest within half a surface element, or
-    None: its mouth is elsewhere, e.g. on the notches) and returns the fraction of the cracks
-    with a top mouth whose sides all stand above the mean u_y of their blocks (NaN if none)."""
-    top = curled = 0
+    """Gives each surface crack (mouth on the top surface in cracks.csv) its break of the top:
+    the mouth of surface.csv nearest to it within half a surface element, each mouth to one
+    crack, nearest pairs first (None: the crack meets the top at a joint that is softening but
+    not yet broken, so the top is not split there). Returns the fraction of the surface cracks
+    with a break whose sides both stand above the mean u_y of their blocks (NaN if none)."""
     for crack in cracks:
-        near = min(mouths, key=lambda m: abs(m["x"] - crack["x"]), default=None)
-        crack["mouth"] = near if near is not None and abs(near["x"] - crack["x"]) <= 0.5 * size else None
-        if crack["mouth"] is not None:
-            top += 1
-            curled += all(margin > 0 for margin in crack["mouth"]["margins"])
-    return curled / top if top else math.nan
+        crack["mouth"] = None
+    surface = [crack for crack in cracks if crack["surface"]]
+    pairs = sorted((abs(mouth["x"] - crack["x"]), c, m) for c, crack in enumerate(surface)
+                   for m, mouth in enumerate(mouths))
+    taken = set()
+    for distance, c, m in pairs:
+        if distance <= 0.5 * size and surface[c]["mouth"] is None and m not in taken:
+            taken.add(m)
+            surface[c]["mouth"] = mouths[m]
+    curled = sum(crack["mouth"] is not None and all(margin > 0 for margin in crack["mouth"]["margins"])
+                 for crack in surface)
+    return curled / len(surface) if surface else math.nan
 
 
 def print_cracks(cracks):
     print("# crack   x (mm)  width (mm)  first seen (s)  top mouth: u_y above its blocks' means (um)")
     for k, crack in enumerate(cracks, start=1):
         mouth = crack["mouth"]
-        sides = ("no (mouth below the top)" if mouth is None else
+        sides = ("no (mouth below the top)" if not crack["surface"] else
+                 "no break of the top (its joint there softens, unbroken)" if mouth is None else
                  " / ".join(f"{margin * 1e6:+.1f}" for margin in mouth["margins"]))
         print(f"# {k:5d} {crack['x'] * MM:8.2f} {crack['width'] * MM:11.4f} {crack['first']:15g}  {sides}")
 
@@ -204,12 +213,18 @@ def check_run(run, outdir, verdicts, ydry):
 
     size = run_report.element_size(surface)
     cracks = final_cracks(run, t_last, size)
-    fraction = curling(cracks, surface_mouths(surface, t_last), size)
+    mouths = surface_mouths(surface, t_last)
+    gaps = sum(mouth["gap"] for mouth in mouths)
+    print(f"# the top surface breaks at {len(mouths)} vertices; their horizontal gaps add up to {gaps * MM:.3f} mm, "
+          f"and with the two ends' movements to {(gaps + ux_last[0] - ux_last[-1]) * MM:.3f} mm: how much the top "
+          "has shrunk, whichever cracks are counted")
+    fraction = curling(cracks, mouths, size)
     print(f"# cracks counted at the last frame, t = {t_last:g} s (surface element {size * MM:.2f} mm):")
     print_cracks(cracks)
-    top = [crack["width"] for crack in cracks if crack["mouth"] is not None]
+    top = [crack["width"] for crack in cracks if crack["surface"]]
     print(f"# {len(top)} of the {len(cracks)} cracks have their mouth on the top surface"
-          + (f", mean width {np.mean(top) * MM:.4f} mm" if top else ""))
+          + (f", mean width {np.mean(top) * MM:.4f} mm" if top else "")
+          + f"; {sum(crack['mouth'] is not None for crack in cracks)} of them break it")
     verdicts.check("curling_fraction", fraction, f">={CURLING_FRACTION:g}", fraction >= CURLING_FRACTION)
 
 
