@@ -10,7 +10,8 @@ run is a variant: three seeds of a 5 % strength
 heterogeneity, the relaxation cap doubled, the element size halved. Each variant's
 surface_crack_count and mean_surface_crack_width_m (summary.json, the figures the experiment
 measures) are compared with the reference's, and printed beside the experiment's (7 cracks,
-0.836 mm). A variant not yet completed is shown at the time it reached and fails `completed`.
+0.836 mm), with the sum of the top surface's gaps (the shrinkage the cracks take up, whichever
+cracks count). A variant not yet completed is shown at the time it reached and fails `completed`.
 Prints `peron_robustness METRIC VALUE TOLERANCE PASS|FAIL` (METRIC names the variant) and exits
 1 if a check fails, 2 if OUT has no sweep.json or no completed reference run.
 
@@ -54,6 +55,17 @@ def figures(folder, shipped_key):
     return json.loads((folder / "summary.json").read_text()), is_shipped
 
 
+def top_gaps(folder):
+    """The horizontal gaps of the top surface at its breaks, summed, at the last frame of the
+    run's surface.csv (check.py prints the same), in m; NaN without surface.csv rows. Unlike
+    the count and mean width of the cracks, it does not depend on which cracks count."""
+    path = folder / "surface.csv"
+    surface = ydry_case.read_csv(path) if path.is_file() else None
+    if surface is None or not len(surface["time_s"]):
+        return math.nan
+    return sum(mouth["gap"] for mouth in check.surface_mouths(surface, surface["time_s"][-1]))
+
+
 def main():
     parser = ydry_case.script_parser(__doc__)
     parser.add_argument("out", type=Path, help="the folder of the robustness runs (sweep.json)")
@@ -73,9 +85,9 @@ def main():
     base_width = check.number(base["mean_surface_crack_width_m"])
     print(f"# reference {reference[0]} ({', '.join(runs[reference[0]][0])}): {base['surface_crack_count']} surface "
           f"cracks, mean width {base_width * check.MM:.4f} mm (experiment {check.CRACKS}, "
-          f"{check.MEAN_WIDTH * check.MM:.3f} mm)")
+          f"{check.MEAN_WIDTH * check.MM:.3f} mm), top gaps {top_gaps(args.out / reference[0]) * check.MM:.3f} mm")
     print("# run                       what                         t (s)   cracks  mean width (mm)  "
-          "vs reference   total (mm)  right end u_x (mm)")
+          "vs reference   total (mm)  right end u_x (mm)  top gaps (mm)")
     verdicts = ydry_case.Verdicts("peron_robustness")
     for name, (what, found) in runs.items():
         if name == reference[0]:
@@ -89,7 +101,8 @@ def main():
         change = (width - base_width) / base_width
         print(f"# {name:25s} {', '.join(what):28s} {s['time_s']:7g} {s['surface_crack_count']:7d} "
               f"{width * check.MM:16.4f} {100 * change:+11.1f} % {check.number(s['total_surface_crack_width_m']) * check.MM:12.3f} "
-              f"{check.number(s['right_end_displacement_m']) * check.MM:+19.4f}")
+              f"{check.number(s['right_end_displacement_m']) * check.MM:+19.4f} "
+              f"{top_gaps(args.out / name) * check.MM:14.3f}")
         verdicts.check(f"{name}_completed", bool(s["completed"]), "true", bool(s["completed"]))
         count_change = s["surface_crack_count"] - base["surface_crack_count"]
         verdicts.check(f"{name}_surface_crack_count_change", count_change, f"+-{COUNT_TOLERANCE}",
