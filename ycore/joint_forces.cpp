@@ -5,6 +5,16 @@
 // sum w (sigma do + tau ds), including the turn of the joint's axis with the nodes: that term
 // (q below) makes the forces conserve angular momentum, which the usual "traction along n and
 // t on each node pair" misses at finite opening.
+//
+// Most joints, most of the time, are intact and before both peaks of the law at all three
+// points. The kernel takes the joints in chunks of kInterleavedChunk (the chunks the threads
+// deal out) in three passes: the chunk's node coordinates and joint constants are copied into
+// arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
+// then each joint that is broken, damaged, of a material that cannot break or past a peak is
+// done again with the full law (joint_nodal_forces), and every joint's work and forces are
+// stored. Both laws do the same operations in the same order before the peaks, so the result
+// is the full law's, bit for bit (tests/test_mechanics.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "ycore/joint_law.h"
@@ -12,52 +22,153 @@
 #include "ycore/mechanics.h"
 
 namespace ydry {
+namespace {
 
-void joint_forces(State& s, double dt) {
+constexpr int kChunk = kInterleavedChunk;
+
+// Sums the three points' tractions into the joint's nodal forces.
+struct JointForceSum {
+  double g0x = 0, g0y = 0, g1x = 0, g1y = 0, q = 0;
+  // Point p with weight w (its share of length x thickness), tractions normal and shear at
+  // opening o and slip s.
+  void add(const JointFrame& f, int p, double w, double normal, double shear, double o, double s) {
+    const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
+    const double gx = w * (normal * f.nx + shear * f.tx), gy = w * (normal * f.ny + shear * f.ty);
+    g0x += a * gx, g0y += a * gy, g1x += b * gx, g1y += b * gy;
+    q += w * (shear * o - normal * s) / f.length;
+  }
+  // Node 0 (end 0, first face) is pulled back by -g0, its partner 3 by +g0; the axis term
+  // acts along n with +q/2 on nodes 0, 3 and -q/2 on nodes 1, 2.
+  void forces(const JointFrame& f, double out[8]) const {
+    const double qx = 0.5 * q * f.nx, qy = 0.5 * q * f.ny;
+    out[0] = -g0x + qx, out[1] = -g0y + qy, out[2] = -g1x - qx, out[3] = -g1y - qy;
+    out[4] = g1x - qx, out[5] = g1y - qy, out[6] = g0x + qx, out[7] = g0y + qy;
+  }
+};
+
+// One chunk of joints as arrays over the chunk, so that the pre-peak pass vectorises.
+struct JointChunk {
+  double x[4][kChunk], y[4][kChunk];  // nodes 0..3
+  double h0[kChunk], tan_friction[kChunk];
+  double k[kChunk], tensile[kChunk], cohesion[kChunk], peak_opening[kChunk];  // JointStrength
+  bool full_law[kChunk];              // broken, damaged or not breakable: joint_nodal_forces
+  double past_peak[kChunk];           // > 0: a point past a peak, joint_nodal_forces too
+  double fresh[8][kChunk];            // forces on nodes 0..3 (x, y)
+};
+
+void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
+  const Nodes& n = s.nodes;
+  const Joints& jt = s.joints;
+  for (int i = 0; i < count; ++i) {
+    const std::size_t j = first + std::size_t(i);
+    const index_t* node = &jt.node[4 * j];
+    for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
+    const MaterialModel& m = s.materials[jt.material[j]];
+    const double* damage = &jt.damage[3 * j];
+    c.full_law[i] = jt.broken[j] || !m.mechanical || !m.breakable || damage[0] > 0.0 || damage[1] > 0.0 ||
+                    damage[2] > 0.0;
+    // A joint left to the full law still goes through the vector pass: give it a harmless law.
+    const JointStrength strength = c.full_law[i] ? JointStrength{1.0, 1.0, 1.0, 2.0}
+                                                 : joint_strength(m, jt.strength_factor[j], jt.length0[j]);
+    c.h0[i] = jt.length0[j];
+    c.tan_friction[i] = m.tan_friction;
+    c.k[i] = strength.k, c.tensile[i] = strength.tensile, c.cohesion[i] = strength.cohesion;
+    c.peak_opening[i] = strength.peak_opening;
+  }
+}
+
+// The pre-peak law at every joint of the chunk; flags the joints past a peak. Built for AVX2
+// as well as the baseline, chosen at load time: without FMA, AVX2 rounds every operation as
+// the scalar code does, so both give the same bits.
+__attribute__((target_clones("avx2", "default"))) void pre_peak_forces(JointChunk& c, int count,
+                                                                         double thickness) {
+  for (int i = 0; i < count; ++i) {
+    const JointFrame f = joint_frame(c.x[0][i], c.x[1][i], c.x[2][i], c.x[3][i], c.y[0][i], c.y[1][i],
+                                     c.y[2][i], c.y[3][i]);
+    const JointStrength strength{c.k[i], c.tensile[i], c.cohesion[i], c.peak_opening[i]};
+    JointForceSum sum;
+    double past_peak = 0.0;
+#pragma GCC unroll 3
+    for (int p = 0; p < 3; ++p) {
+      double o, sl;
+      point_opening_slip(f, p, o, sl);
+      const PrePeakTraction t = pre_peak_traction(strength, c.tan_friction[i], o, sl);
+      past_peak += t.past_peak;
+      sum.add(f, p, kJointPointWeight[p] * c.h0[i] * thickness, t.normal, t.shear, o, sl);
+    }
+    double out[8];
+    sum.forces(f, out);
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) c.fresh[k][i] = out[k];
+    c.past_peak[i] = past_peak;
+  }
+}
+
+// Work over the step by the trapezoid of the forces before and after it (exact for a linear
+// spring, so a vibrating joint books no spurious work), then the new forces; the full law
+// where the chunk says so. Broken joints carry nothing and take no work.
+void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, double dt) {
   const Nodes& n = s.nodes;
   Joints& jt = s.joints;
-  const double thickness = s.mechanics.thickness_m;
-  const std::int64_t nj = std::int64_t(jt.size());
-#pragma omp parallel for schedule(static, kInterleavedChunk) if (std::size_t(nj) > parallel_minimum)
-  for (std::int64_t j = 0; j < nj; ++j) {
-    double* f = &jt.force[8 * j];  // x, y of nodes 0..3
-    const MaterialModel& m = s.materials[jt.material[j]];
-    if (jt.broken[j] || !m.mechanical) {
+  for (int i = 0; i < count; ++i) {
+    const std::size_t j = first + std::size_t(i);
+    double* f = &jt.force[8 * j];
+    if (jt.broken[j] || !s.materials[jt.material[j]].mechanical) {
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
       continue;
     }
+    double fresh[8];
+    if (c.full_law[i] || c.past_peak[i] > 0.0)
+      joint_nodal_forces(s, j, fresh);
+    else
+      for (int k = 0; k < 8; ++k) fresh[k] = c.fresh[k][i];
     const index_t* node = &jt.node[4 * j];
-    const double ex = 0.5 * (n.x[node[1]] + n.x[node[2]] - n.x[node[0]] - n.x[node[3]]);
-    const double ey = 0.5 * (n.y[node[1]] + n.y[node[2]] - n.y[node[0]] - n.y[node[3]]);
-    const double h = std::sqrt(ex * ex + ey * ey);  // not std::hypot: it cost a sixth of a step
-    const double tx = ex / h, ty = ey / h, nx = -ty, ny = tx;
-    const double d0x = n.x[node[0]] - n.x[node[3]], d0y = n.y[node[0]] - n.y[node[3]];
-    const double d1x = n.x[node[1]] - n.x[node[2]], d1y = n.y[node[1]] - n.y[node[2]];
-    const double h0 = jt.length0[j];
-    const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
-    double g0x = 0, g0y = 0, g1x = 0, g1y = 0, q = 0;
-    for (int p = 0; p < 3; ++p) {
-      const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
-      const double dx = a * d0x + b * d1x, dy = a * d0y + b * d1y;
-      const double o = dx * nx + dy * ny, sl = dx * tx + dy * ty;
-      const PointTraction tr = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
-      const double w = kJointPointWeight[p] * h0 * thickness;
-      const double gx = w * (tr.normal * nx + tr.shear * tx), gy = w * (tr.normal * ny + tr.shear * ty);
-      g0x += a * gx, g0y += a * gy, g1x += b * gx, g1y += b * gy;
-      q += w * (tr.shear * o - tr.normal * sl) / h;
-    }
-    // Node 0 (end 0, first face) is pulled back by -g0, its partner 3 by +g0; the axis term
-    // acts along n with +q/2 on nodes 0, 3 and -q/2 on nodes 1, 2.
-    const double qx = 0.5 * q * nx, qy = 0.5 * q * ny;
-    const double fresh[8] = {-g0x + qx, -g0y + qy, -g1x - qx, -g1y - qy,
-                             g1x - qx,  g1y - qy,  g0x + qx,  g0y + qy};
-    // Work over the step by the trapezoid of the forces before and after it: exact for a
-    // linear spring, so a vibrating joint books no spurious work.
     double power = 0.0;
     for (int k = 0; k < 4; ++k)
       power += 0.5 * ((f[2 * k] + fresh[2 * k]) * n.vx[node[k]] + (f[2 * k + 1] + fresh[2 * k + 1]) * n.vy[node[k]]);
     jt.work[j] -= power * dt;
     for (int k = 0; k < 8; ++k) f[k] = fresh[k];
+  }
+}
+
+}  // namespace
+
+void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
+  const Nodes& n = s.nodes;
+  const Joints& jt = s.joints;
+  const MaterialModel& m = s.materials[jt.material[j]];
+  if (jt.broken[j] || !m.mechanical) {
+    for (int k = 0; k < 8; ++k) out[k] = 0.0;
+    return;
+  }
+  const index_t* node = &jt.node[4 * j];
+  const JointFrame f = joint_frame(n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]], n.y[node[0]],
+                                   n.y[node[1]], n.y[node[2]], n.y[node[3]]);
+  const double h0 = jt.length0[j];
+  const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
+  JointForceSum sum;
+  for (int p = 0; p < 3; ++p) {
+    double o, sl;
+    point_opening_slip(f, p, o, sl);
+    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
+    sum.add(f, p, kJointPointWeight[p] * h0 * s.mechanics.thickness_m, t.normal, t.shear, o, sl);
+  }
+  sum.forces(f, out);
+}
+
+void joint_forces(State& s, double dt) {
+  const double thickness = s.mechanics.thickness_m;
+  const std::size_t nj = s.joints.size();
+  const std::int64_t chunks = std::int64_t((nj + kChunk - 1) / kChunk);
+  // One chunk at a time per thread, dealt out in turn: the joint loop's interleaved schedule.
+#pragma omp parallel for schedule(static, 1) if (nj > parallel_minimum)
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    JointChunk chunk;
+    const std::size_t first = std::size_t(c) * kChunk;
+    const int count = int(std::min<std::size_t>(kChunk, nj - first));
+    gather_chunk(s, first, count, chunk);
+    pre_peak_forces(chunk, count, thickness);
+    store_chunk(s, first, count, chunk, dt);
   }
 }
 

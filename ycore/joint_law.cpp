@@ -23,19 +23,16 @@ double softening_curve_area() {
 }
 
 JointKinematics joint_kinematics(const Nodes& n, const index_t* jn) {
+  const JointFrame f = joint_frame(n.x[jn[0]], n.x[jn[1]], n.x[jn[2]], n.x[jn[3]], n.y[jn[0]], n.y[jn[1]],
+                                   n.y[jn[2]], n.y[jn[3]]);
   JointKinematics k;
-  const double ex = 0.5 * (n.x[jn[1]] + n.x[jn[2]] - n.x[jn[0]] - n.x[jn[3]]);
-  const double ey = 0.5 * (n.y[jn[1]] + n.y[jn[2]] - n.y[jn[0]] - n.y[jn[3]]);
-  k.length = std::sqrt(ex * ex + ey * ey);
-  const double tx = ex / k.length, ty = ey / k.length;
-  k.nx = -ty;
-  k.ny = tx;
-  for (int end = 0; end < 2; ++end) {
-    const index_t a = jn[end], b = jn[3 - end];
-    const double dx = n.x[a] - n.x[b], dy = n.y[a] - n.y[b];
-    k.opening[end] = dx * k.nx + dy * k.ny;
-    k.slip[end] = dx * tx + dy * ty;
-  }
+  k.length = f.length;
+  k.nx = f.nx;
+  k.ny = f.ny;
+  k.opening[0] = f.d0x * f.nx + f.d0y * f.ny;
+  k.slip[0] = f.d0x * f.tx + f.d0y * f.ty;
+  k.opening[1] = f.d1x * f.nx + f.d1y * f.ny;
+  k.slip[1] = f.d1x * f.tx + f.d1y * f.ty;
   return k;
 }
 

@@ -84,6 +84,25 @@ inline PointTraction cohesive_traction(const MaterialModel& m, const JointStreng
   return t;
 }
 
+// cohesive_traction at an undamaged point before both peaks, bit for bit, without branches:
+// the force kernel evaluates it for a whole chunk of joints at once, in vector registers, and
+// takes cohesive_traction instead wherever `past_peak` is set (a peak passed, or no shear
+// strength). The material must be breakable.
+struct PrePeakTraction {
+  double normal, shear;  // Pa, as in PointTraction
+  double past_peak;      // 1 past a peak, else 0 (a double, so that the kernel vectorises)
+};
+inline PrePeakTraction pre_peak_traction(const JointStrength& j, double tan_friction, double o, double s) {
+  const double compression = o < 0.0 ? -j.k * o : 0.0;
+  const double fs = j.cohesion + compression * tan_friction;  // Fig. 2b
+  const double sp = 2.0 * fs / j.k, abs_s = std::fabs(s);
+  PrePeakTraction t;
+  t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / j.peak_opening) * j.tensile;
+  t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * fs, s);
+  t.past_peak = o > j.peak_opening || !(fs > 0.0) || abs_s > sp ? 1.0 : 0.0;
+  return t;
+}
+
 // The same at a joint of initial length h0 and the given strength factor.
 inline PointTraction cohesive_traction(const MaterialModel& m, double strength_factor, double h0, double o,
                                        double s, double committed_damage) {
@@ -94,6 +113,35 @@ inline PointTraction cohesive_traction(const MaterialModel& m, double strength_f
 // the initial length, and the share of end 0 (nodes 0, 3) in each point's opening and slip.
 constexpr double kJointPointWeight[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
 constexpr double kJointPointShareOfEnd0[3] = {1.0, 0.5, 0.0};
+
+// A joint's current axis and the separations of its two node pairs, from the x and y of its
+// nodes 0..3: end 0 is node 0 minus node 3, end 1 node 1 minus node 2.
+struct JointFrame {
+  double length;          // current, m
+  double tx, ty, nx, ny;  // unit axis, from end 0 to end 1, and unit normal into the first triangle
+  double d0x, d0y, d1x, d1y;
+};
+inline JointFrame joint_frame(double x0, double x1, double x2, double x3, double y0, double y1, double y2,
+                              double y3) {
+  JointFrame f;
+  const double ex = 0.5 * (x1 + x2 - x0 - x3), ey = 0.5 * (y1 + y2 - y0 - y3);
+  f.length = std::sqrt(ex * ex + ey * ey);  // not std::hypot: it cost a sixth of a step
+  f.tx = ex / f.length;
+  f.ty = ey / f.length;
+  f.nx = -f.ty;
+  f.ny = f.tx;
+  f.d0x = x0 - x3, f.d0y = y0 - y3, f.d1x = x1 - x2, f.d1y = y1 - y2;
+  return f;
+}
+
+// Normal opening o and slip s (m) at integration point p: the ends' separations weighted by
+// kJointPointShareOfEnd0, on the joint's axes.
+inline void point_opening_slip(const JointFrame& f, int p, double& o, double& s) {
+  const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
+  const double dx = a * f.d0x + b * f.d1x, dy = a * f.d0y + b * f.d1y;
+  o = dx * f.nx + dy * f.ny;
+  s = dx * f.tx + dy * f.ty;
+}
 
 // Opening and slip (m) at the joint's two ends: end 0 pairs nodes 0 and 3, end 1 nodes 1 and 2.
 // The normal points into the first triangle, so a positive opening separates the faces.

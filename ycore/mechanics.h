@@ -40,9 +40,13 @@ void scale_node_masses_to_common_step(State& state);
 void element_forces(State& state);
 
 // Joint forces into joints.force, and the work done on them over the last step (the
-// trapezoid of the forces before and after it, times velocities x dt) into joints.work. Broken joints carry nothing: their faces meet through contact
-// (ycore/contact.h).
+// trapezoid of the forces before and after it, times velocities x dt) into joints.work.
+// Broken joints carry nothing: their faces meet through contact (ycore/contact.h).
 void joint_forces(State& state, double dt);
+
+// The forces of joint j on its nodes 0..3 (x, y) with the full traction law at its three
+// points, as joint_forces stores them: zero for a broken joint.
+void joint_nodal_forces(const State& state, std::size_t j, double out[8]);
 
 struct RelaxationControls {
   double tolerance = 1e-7;          // out-of-balance force ratio that ends it
