@@ -4,12 +4,14 @@ judges curling on the surface cracks only.
 
 A made-up last frame of surface.csv: a 30 mm top in three blocks, broken at x0 = 10 and 20 mm.
 The break at 10 mm opens 0.5 mm and both its sides stand above their blocks' means (it curls);
-the one at 20 mm opens 0.3 mm and its right side stands below its block's mean. Made-up cracks
-at that time: a surface crack at each break, a crack from the base whose mouth lies nearer
-the 10 mm break than the surface crack does (it must not take the break), and a surface crack
-at 25 mm, where the top is not split (a softening joint, not yet broken). Expected: two
-mouths with gaps of 0.5 and 0.3 mm; the 10 mm break given to the surface crack; curling
-1 of 3 surface cracks. Exits 1 on any failure.
+the one at 20 mm opens 0.3 mm and its left side stands below its block's mean. Made-up cracks
+at that time: a surface crack at each break; a crack from the base whose mouth lies nearer
+the 10 mm break than the surface crack does (it must not take the break); a second surface
+crack 0.5 mm from the 20 mm break, listed before the one at the break (the nearer must take
+it, and the other go without); and a surface crack at 25 mm, where the top is not split (a
+softening joint, not yet broken). Expected: two mouths with gaps of 0.5 and 0.3 mm; each
+break given to the surface crack nearest it; curling 1 of 4 surface cracks. Exits 1 on any
+failure.
 """
 import math
 import sys
@@ -57,14 +59,15 @@ def main():
         failures.append(f"mouths: expected gaps 0.5 and 0.3 mm, got {gaps}")
     cracks = [{"x": 10.3 * MM, "width": 0.5 * MM, "surface": True, "first": 0.0},
               {"x": 10.05 * MM, "width": 0.1 * MM, "surface": False, "first": 0.0},
+              {"x": 20.5 * MM, "width": 0.1 * MM, "surface": True, "first": 0.0},
               {"x": 20.0 * MM, "width": 0.3 * MM, "surface": True, "first": 0.0},
               {"x": 25.0 * MM, "width": 0.15 * MM, "surface": True, "first": 0.0}]
     fraction = check.curling(cracks, mouths, SIZE)
-    if not math.isclose(fraction, 1 / 3, rel_tol=1e-12):
-        failures.append(f"curling fraction: expected 1/3, got {fraction}")
+    if not math.isclose(fraction, 1 / 4, rel_tol=1e-12):
+        failures.append(f"curling fraction: expected 1/4, got {fraction}")
     taken = [None if crack["mouth"] is None else round(crack["mouth"]["x"] / MM, 6) for crack in cracks]
-    if taken != [10.0, None, 20.0, None]:
-        failures.append(f"breaks given to the cracks: expected [10.0, None, 20.0, None] mm, got {taken}")
+    if taken != [10.0, None, None, 20.0, None]:
+        failures.append(f"breaks given to the cracks: expected [10.0, None, None, 20.0, None] mm, got {taken}")
     if not math.isnan(check.curling([dict(cracks[1])], mouths, SIZE)):
         failures.append("curling without a surface crack: expected NaN")
     return ydry_case.failed(failures)

@@ -10,10 +10,12 @@
 // points. The kernel takes the joints in chunks of kInterleavedChunk (the chunks the threads
 // deal out) in three passes: the chunk's node coordinates and joint constants are copied into
 // arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
-// then each joint that is broken, damaged, of a material that cannot break or past a peak is
-// done again with the full law (joint_nodal_forces), and every joint's work and forces are
-// stored. Both laws do the same operations in the same order before the peaks, so the result
-// is the full law's, bit for bit (tests/test_mechanics.cpp).
+// then each joint that is damaged, of a material that cannot break, past a peak or without
+// shear strength at some point is done again with the full law (joint_nodal_forces), broken
+// joints are zeroed, and every joint's work and forces are stored. Both laws do the same
+// operations in the same order before the peaks, and this file is compiled without FMA
+// contraction (CMakeLists.txt), so the result is the full law's, bit for bit
+// (tests/test_mechanics.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -77,11 +79,17 @@ void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
   }
 }
 
-// The pre-peak law at every joint of the chunk; flags the joints past a peak. Built for AVX2
-// as well as the baseline, chosen at load time: without FMA, AVX2 rounds every operation as
-// the scalar code does, so both give the same bits.
-__attribute__((target_clones("avx2", "default"))) void pre_peak_forces(JointChunk& c, int count,
-                                                                         double thickness) {
+// On x86-64 Linux the pre-peak pass is built for AVX2 as well as the baseline, chosen at load
+// time (an ifunc): AVX2 without FMA rounds every operation as the scalar code does, so both
+// give the same bits. Elsewhere it is built once.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__)
+#define YDRY_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define YDRY_AVX2_CLONE
+#endif
+
+// The pre-peak law at every joint of the chunk; flags the joints past a peak.
+YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness) {
   for (int i = 0; i < count; ++i) {
     const JointFrame f = joint_frame(c.x[0][i], c.x[1][i], c.x[2][i], c.x[3][i], c.y[0][i], c.y[1][i],
                                      c.y[2][i], c.y[3][i]);

@@ -99,22 +99,25 @@ def final_cracks(run, t, size):
 def surface_mouths(surface, t):
     """The crack mouths on the top surface at time t (surface.csv): one per surface vertex that
     has several points (the sides of a crack, on different segments), each {x: the current x of
-    the vertex (mean of its sides), gap: the horizontal distance between its sides now,
+    the vertex (mean of its sides), gap: how far its right side (the side on the block further
+    right) has moved from its left side, u_x right - u_x left (negative where they overlap),
     margins: the u_y of each side minus the mean u_y of its block}. A block is a segment (an unbroken stretch of the surface); its mean u_y is the mean
     along its length, the trapezoidal integral of u_y over x0 divided by the segment's span."""
     at = surface["time_s"] == t
     x0, y0, ux, uy, segment = (surface[k][at] for k in ("x0_m", "y0_m", "ux_m", "uy_m", "segment"))
-    block_mean = {}
+    block_mean, block_x0 = {}, {}
     for block in np.unique(segment):
         rows = segment == block
         span = np.ptp(x0[rows])
         block_mean[block] = np.trapz(uy[rows], x0[rows]) / span if span > 0 else float(uy[rows][0])
+        block_x0[block] = float(np.mean(x0[rows]))
     _, vertex, count = np.unique(np.c_[x0, y0], axis=0, return_inverse=True, return_counts=True)
     vertex = vertex.ravel()
     mouths = []
     for v in np.flatnonzero(count > 1):
         sides = np.flatnonzero(vertex == v)
-        mouths.append({"x": float(np.mean(x0[sides] + ux[sides])), "gap": float(np.ptp(x0[sides] + ux[sides])),
+        left, right = sorted(sides, key=lambda p: block_x0[segment[p]])[::len(sides) - 1]
+        mouths.append({"x": float(np.mean(x0[sides] + ux[sides])), "gap": float(ux[right] - ux[left]),
                        "margins": [float(uy[p] - block_mean[segment[p]]) for p in sides]})
     return mouths
 
