@@ -53,7 +53,8 @@ struct JointChunk {
   double x[4][kChunk], y[4][kChunk];  // nodes 0..3
   double h0[kChunk], tan_friction[kChunk];
   double k[kChunk], tensile[kChunk], cohesion[kChunk], peak_opening[kChunk];  // JointStrength
-  bool full_law[kChunk];              // broken, damaged or not breakable: joint_nodal_forces
+  bool carries_nothing[kChunk];       // broken, or of a material without mechanics
+  bool full_law[kChunk];              // that, damaged or not breakable: joint_nodal_forces
   double past_peak[kChunk];           // > 0: a point past a peak, joint_nodal_forces too
   double fresh[8][kChunk];            // forces on nodes 0..3 (x, y)
 };
@@ -67,8 +68,8 @@ void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
     for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
     const MaterialModel& m = s.materials[jt.material[j]];
     const double* damage = &jt.damage[3 * j];
-    c.full_law[i] = jt.broken[j] || !m.mechanical || !m.breakable || damage[0] > 0.0 || damage[1] > 0.0 ||
-                    damage[2] > 0.0;
+    c.carries_nothing[i] = jt.broken[j] || !m.mechanical;
+    c.full_law[i] = c.carries_nothing[i] || !m.breakable || damage[0] > 0.0 || damage[1] > 0.0 || damage[2] > 0.0;
     // A joint left to the full law still goes through the vector pass: give it a harmless law.
     const JointStrength strength = c.full_law[i] ? JointStrength{1.0, 1.0, 1.0, 2.0}
                                                  : joint_strength(m, jt.strength_factor[j], jt.length0[j]);
@@ -121,7 +122,7 @@ void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, do
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
     double* f = &jt.force[8 * j];
-    if (jt.broken[j] || !s.materials[jt.material[j]].mechanical) {
+    if (c.carries_nothing[i]) {
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
       continue;
     }
