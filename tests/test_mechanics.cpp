@@ -153,8 +153,8 @@ TEST_CASE("the joint kernel's pre-peak pass gives the full traction law's forces
   // compression, and others pass them; some joints damaged, some broken. On 1 and 2 threads.
   ydry_test::TempDir dir;
   State s = setup_state(ydry_test::block_deck(dir, "left", {"mesh.size=[0.03, 0.02]"}));
-  REQUIRE(s.joints.size() > std::size_t(4 * kInterleavedChunk));
-  REQUIRE(s.joints.size() % kInterleavedChunk != 0);
+  REQUIRE(s.joints.size() > std::size_t(4 * kJointChunk));
+  REQUIRE(s.joints.size() % kJointChunk != 0);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> exponent(-9.5, -6.5), factor(0.8, 1.2);
   std::normal_distribution<double> unit(0.0, 1.0);

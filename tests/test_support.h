@@ -63,16 +63,19 @@ std::vector<std::string> files_under(const std::filesystem::path& folder);
 // Runs body(threads) on 1, then 2 OpenMP threads with every loop in parallel however short
 // (parallel_minimum = 0), for the tests that results are bitwise the same on any thread
 // count; the thread count and parallel_minimum are restored afterwards, even on a failure.
+// Puts the thread count and parallel_minimum back as they were when it was made.
+struct RestoreThreadSettings {
+  std::size_t minimum = ydry::parallel_minimum;
+  int threads = omp_get_max_threads();
+  ~RestoreThreadSettings() {
+    ydry::parallel_minimum = minimum;
+    omp_set_num_threads(threads);
+  }
+};
+
 template <class Body>
 void on_1_and_2_threads(Body body) {
-  struct Restore {
-    std::size_t minimum = ydry::parallel_minimum;
-    int threads = omp_get_max_threads();
-    ~Restore() {
-      ydry::parallel_minimum = minimum;
-      omp_set_num_threads(threads);
-    }
-  } restore;
+  RestoreThreadSettings restore;
   ydry::parallel_minimum = 0;
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);

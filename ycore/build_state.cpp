@@ -31,6 +31,7 @@ MeshInput load_mesh(const Deck& deck) {
                                             deck.mesh_pattern, deck.mesh_material)
                        : read_gmsh(deck.mesh_file);
   orient_counter_clockwise(mesh);
+  order_triangles_along_hilbert_curve(mesh);
   if (mesh.triangle_count() == 0) throw InputError(deck.mesh_where + ": the mesh has no triangles");
   for (const std::string& name : mesh.tri_material)
     if (!deck.materials.count(name))

@@ -10,7 +10,6 @@
 #include <cmath>
 
 #include "ycore/corotational.h"
-#include "ycore/blocked_sum.h"
 #include "ycore/mechanics.h"
 
 namespace ydry {
@@ -20,9 +19,7 @@ void element_forces(State& s) {
   Triangles& tri = s.triangles;
   const double thickness = s.mechanics.thickness_m;
   const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
-  const std::int64_t nt = std::int64_t(tri.size());
-#pragma omp parallel for schedule(static, kInterleavedChunk) if (std::size_t(nt) > parallel_minimum)
-  for (std::int64_t e = 0; e < nt; ++e) {
+  for_each_owned(s.ownership.triangle_begin, tri.size(), [&](std::size_t e) {
     const MaterialModel& m = s.materials[tri.material[e]];
     const index_t i = corner_node(index_t(e), 0);
     double f[6] = {0, 0, 0, 0, 0, 0};  // x, y of corners 0, 1, 2
@@ -49,7 +46,7 @@ void element_forces(State& s) {
       n.fx[i + a] = f[2 * a];
       n.fy[i + a] = f[2 * a + 1];
     }
-  }
+  });
 }
 
 }  // namespace ydry

@@ -7,8 +7,8 @@
 // t on each node pair" misses at finite opening.
 //
 // Most joints, most of the time, are intact and before both peaks of the law at all three
-// points. The kernel takes the joints in chunks of kInterleavedChunk (the chunks the threads
-// deal out) in three passes: the chunk's node coordinates and joint constants are copied into
+// points. The kernel takes each thread's joints (ycore/ownership.h) in chunks of kJointChunk
+// in three passes: the chunk's node coordinates and joint constants are copied into
 // arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
 // then each joint that is damaged, of a material that cannot break, past a peak or without
 // shear strength at some point is done again with the full law (joint_nodal_forces), broken
@@ -20,13 +20,10 @@
 #include <cmath>
 
 #include "ycore/joint_law.h"
-#include "ycore/blocked_sum.h"
 #include "ycore/mechanics.h"
 
 namespace ydry {
 namespace {
-
-constexpr int kChunk = kInterleavedChunk;
 
 // Sums the three points' tractions into the joint's nodal forces.
 struct JointForceSum {
@@ -50,13 +47,13 @@ struct JointForceSum {
 
 // One chunk of joints as arrays over the chunk, so that the pre-peak pass vectorises.
 struct JointChunk {
-  double x[4][kChunk], y[4][kChunk];  // nodes 0..3
-  double h0[kChunk], tan_friction[kChunk];
-  double k[kChunk], tensile[kChunk], cohesion[kChunk], peak_opening[kChunk];  // JointStrength
-  bool carries_nothing[kChunk];       // broken, or of a material without mechanics
-  bool full_law[kChunk];              // that, damaged or not breakable: joint_nodal_forces
-  double past_peak[kChunk];           // > 0: a point past a peak, joint_nodal_forces too
-  double fresh[8][kChunk];            // forces on nodes 0..3 (x, y)
+  double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
+  double h0[kJointChunk], tan_friction[kJointChunk];
+  double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];  // JointStrength
+  bool carries_nothing[kJointChunk];       // broken, or of a material without mechanics
+  bool full_law[kJointChunk];              // that, damaged or not breakable: joint_nodal_forces
+  double past_peak[kJointChunk];           // > 0: a point past a peak, joint_nodal_forces too
+  double fresh[8][kJointChunk];            // forces on nodes 0..3 (x, y)
 };
 
 void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
@@ -168,16 +165,16 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
 void joint_forces(State& s, double dt) {
   const double thickness = s.mechanics.thickness_m;
   const std::size_t nj = s.joints.size();
-  const std::int64_t chunks = std::int64_t((nj + kChunk - 1) / kChunk);
-  // One chunk at a time per thread, dealt out in turn: the joint loop's interleaved schedule.
-#pragma omp parallel for schedule(static, 1) if (nj > parallel_minimum)
-  for (std::int64_t c = 0; c < chunks; ++c) {
+#pragma omp parallel if (nj > parallel_minimum)
+  {
+    const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
     JointChunk chunk;
-    const std::size_t first = std::size_t(c) * kChunk;
-    const int count = int(std::min<std::size_t>(kChunk, nj - first));
-    gather_chunk(s, first, count, chunk);
-    pre_peak_forces(chunk, count, thickness);
-    store_chunk(s, first, count, chunk, dt);
+    for (std::size_t first = owned.begin; first < owned.end; first += kJointChunk) {
+      const int count = int(std::min<std::size_t>(kJointChunk, owned.end - first));
+      gather_chunk(s, first, count, chunk);
+      pre_peak_forces(chunk, count, thickness);
+      store_chunk(s, first, count, chunk, dt);
+    }
   }
 }
 

@@ -35,9 +35,17 @@ double stable_mechanics_step(const State& state, double safety);
 // inputs/peron/README.md.)
 void scale_node_masses_to_common_step(State& state);
 
+// Cuts triangles, nodes and joints into `slots` ranges of about equal work (ownership.h):
+// a rigid triangle is counted as a tenth of a deformable one (it has no element or joint
+// forces, only its nodes' passes).
+Ownership partition_for_threads(const State& state, std::size_t slots);
+
 // Element internal forces and gravity: overwrites fx, fy of every node (each triangle owns
 // its three nodes) and the element stress.
 void element_forces(State& state);
+
+// Joints per pass of the joint kernel's vectorised pre-peak law (joint_forces.cpp).
+constexpr int kJointChunk = 256;
 
 // Joint forces into joints.force, and the work done on them over the last step (the
 // trapezoid of the forces before and after it, times velocities x dt) into joints.work.

@@ -219,6 +219,7 @@ void init_mechanics(State& s, const Deck& deck) {
   set_joint_data(s, deck);
   set_constraints(s, deck);
   init_contact(s, deck);
+  s.ownership = partition_for_threads(s, kOwnershipSlots);
   if (deck.node_mass_scaling) scale_node_masses_to_common_step(s);
   mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);

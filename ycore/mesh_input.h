@@ -57,4 +57,8 @@ MeshInput read_gmsh(std::istream& in, const std::string& path);
 // degenerate triangles and areas too large for a double; run on every MeshInput before use.
 void orient_counter_clockwise(MeshInput& mesh);
 
+// Renumbers the triangles in the order of their centroids along a Hilbert curve, so that
+// triangles near in the numbering are near in the mesh (ycore/mesh_order.cpp).
+void order_triangles_along_hilbert_curve(MeshInput& mesh);
+
 }  // namespace ydry

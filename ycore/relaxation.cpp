@@ -66,7 +66,7 @@ ForceMeasures gather_interaction_forces(State& s) {
     }
     mech.fx_previous[i] = fx;
     mech.fy_previous[i] = fy;
-  });
+  }, s.ownership.node_begin);
   return {sums[0], sums[1], sums[2], sums[3]};
 }
 
@@ -81,9 +81,7 @@ ForceMeasures compute_forces(State& s, double dt) {
 void integrate_nodes(State& s, double damping, double dt) {
   Nodes& n = s.nodes;
   const double keep = 1.0 - 0.5 * damping * dt, scale = 1.0 / (1.0 + 0.5 * damping * dt);
-  const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
-  for (std::int64_t i = 0; i < nn; ++i) {
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
     if (!(n.constraint[i] & kFixX)) {
       n.vx[i] = (keep * n.vx[i] + dt * n.fx[i] / n.m[i]) * scale;
       n.x[i] += n.vx[i] * dt;
@@ -92,7 +90,7 @@ void integrate_nodes(State& s, double damping, double dt) {
       n.vy[i] = (keep * n.vy[i] + dt * n.fy[i] / n.m[i]) * scale;
       n.y[i] += n.vy[i] * dt;
     }
-  }
+  });
 }
 
 // Moves the driven nodes by velocity x coupling_dt.
@@ -132,12 +130,10 @@ void update_reactions(State& s, double coupling_dt) {
 void start_motion(State& s) {
   Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
-  const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
-  for (std::int64_t i = 0; i < nn; ++i) {
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
     mech.x_start[i] = n.x[i];
     mech.y_start[i] = n.y[i];
-  }
+  });
 }
 
 // Moves the free nodes on along the last coupling step's motion (the velocities relax leaves
@@ -148,16 +144,14 @@ void start_motion(State& s) {
 // joints and contacts book its work; prescribed components start at rest.
 void predict_equilibrium(State& s, double coupling_dt, double dt) {
   Nodes& n = s.nodes;
-  const std::int64_t nn = std::int64_t(n.size());
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
-  for (std::int64_t i = 0; i < nn; ++i) {
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
     const double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
     const double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
     n.x[i] += jump_x;
     n.y[i] += jump_y;
     n.vx[i] = jump_x / dt;
     n.vy[i] = jump_y / dt;
-  }
+  });
 }
 
 // A node that moved farther than the whole mesh is wide since start_motion has run away
@@ -189,7 +183,7 @@ void finish_motion(State& s, const RelaxationResult& result, double coupling_dt)
   const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
     const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
     sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
-  });
+  }, s.ownership.node_begin);
   mech.gravity_work_J += gravity[0];
   mech.steps += std::uint64_t(result.steps);
   mech.last_residual = result.residual;
@@ -202,7 +196,6 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
-  const std::int64_t nn = std::int64_t(n.size());
   start_motion(s);
   predict_equilibrium(s, coupling_dt, dt);
   move_driven_nodes(s, coupling_dt, dt);
@@ -232,11 +225,10 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
-#pragma omp parallel for schedule(static) if (std::size_t(nn) > parallel_minimum)
-  for (std::int64_t i = 0; i < nn; ++i) {
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
     n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
     n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;
-  }
+  });
   return result;
 }
 
@@ -279,7 +271,7 @@ std::size_t commit_joint_damage(State& s) {
       jt.broken[j] = 1;
       sum[0] += 1.0;
     }
-  });
+  }, s.ownership.joint_begin);
   return std::size_t(broke[0]);
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ycore/mesh_input.h"
+#include "ycore/ownership.h"
 
 namespace ydry {
 
@@ -192,6 +193,7 @@ struct State {
   Mechanics mechanics;
   Contact contact;
   std::vector<MechanicsBoundary> mechanics_boundaries;
+  Ownership ownership;                                     // the threads' ranges (ownership.h)
   std::vector<MaterialModel> materials;                    // by material id
   std::vector<std::string> material_names;                 // material id -> deck name
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
