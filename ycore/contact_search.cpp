@@ -139,6 +139,14 @@ void index_contact_pairs(State& s) {
   for (std::size_t k = 0; k < np; ++k)
     if (k == 0 || c.pair_node[k] != c.pair_node[k - 1]) c.node_pairs.push_back(index_t(k));
   c.node_pairs.push_back(index_t(np));
+  // Each thread takes the corners in its own range of nodes (ycore/ownership.h).
+  const std::vector<std::size_t>& node_begin = s.ownership.node_begin;
+  c.corner_owner_begin.resize(node_begin.size());
+  for (std::size_t k = 0; k < node_begin.size(); ++k)
+    c.corner_owner_begin[k] = std::size_t(
+        std::lower_bound(c.node_pairs.begin(), c.node_pairs.end() - 1, node_begin[k],
+                         [&](index_t first, std::size_t node) { return c.pair_node[first] < node; }) -
+        c.node_pairs.begin());
 
   // Per receiving node, the pair forces it gathers, in pair order (a counting sort).
   c.gather_offset.assign(s.nodes.size() + 1, 0);

@@ -154,6 +154,7 @@ struct Contact {
   // Candidate pairs (node, surface edge), sorted by node then edge, from the broad phase.
   std::vector<index_t> pair_node, pair_edge;
   std::vector<index_t> node_pairs;    // CSR: pairs of the k-th distinct node start at node_pairs[k]
+  std::vector<std::size_t> corner_owner_begin;  // the corners of each Ownership slot's nodes
   std::vector<double> pair_slip;      // elastic tangential slip of the pair, m (friction history)
   std::vector<double> pair_force;     // [6 * pairs] scratch: force on the node, edge a, edge b
   std::vector<index_t> gather_offset; // [nodes + 1] CSR into gather_entry: the pair forces a
