@@ -49,11 +49,12 @@ struct JointForceSum {
 struct JointChunk {
   double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
   double h0[kJointChunk], tan_friction[kJointChunk];
-  double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];  // JointStrength
-  bool carries_nothing[kJointChunk];       // broken, or of a material without mechanics
-  bool full_law[kJointChunk];              // that, damaged or not breakable: joint_nodal_forces
-  double past_peak[kJointChunk];           // > 0: a point past a peak, joint_nodal_forces too
-  double fresh[8][kJointChunk];            // forces on nodes 0..3 (x, y)
+  // JointStrength:
+  double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
+  bool carries_nothing[kJointChunk];  // broken, or of a material without mechanics
+  bool full_law[kJointChunk];         // that, damaged or not breakable: joint_nodal_forces
+  double past_peak[kJointChunk];      // > 0: a point past a peak, joint_nodal_forces too
+  double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
 };
 
 void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
