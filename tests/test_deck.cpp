@@ -118,6 +118,11 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
       {"mass scaling in a dynamic run", "", "",
        "--set solver.integration=dynamic --set solver.node_mass_scaling=true",
        "solver.node_mass_scaling: needs integration = \"quasi_static\""},
+      {"a relaxation method in a dynamic run", "", "",
+       "--set solver.integration=dynamic --set solver.node_mass_scaling=false --set solver.relaxation=fire",
+       "solver.relaxation: needs integration = \"quasi_static\""},
+      {"an unknown relaxation method", "", "", "--set solver.relaxation=cg",
+       "solver.relaxation: \"cg\" is not one of \"viscous\", \"fire\""},
       {"relaxations rarer than the rows of the tables", "", "", "--set solver.mechanics_interval=60",
        "solver.mechanics_interval: is longer than run.series_interval"},
   };

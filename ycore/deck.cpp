@@ -221,6 +221,12 @@ void read_solver(TableReader r, Deck& d) {
   d.dynamic = r.string("integration", {"quasi_static", "dynamic"}, std::string("quasi_static")) == "dynamic";
   d.node_mass_scaling = r.boolean("node_mass_scaling", !d.dynamic);
   if (d.dynamic && d.node_mass_scaling) r.error("node_mass_scaling", "needs integration = \"quasi_static\": a dynamic run keeps the physical masses");
+  if (!d.dynamic)
+    d.relaxation = r.string("relaxation", {"viscous", "fire"}, std::string("viscous")) == "fire"
+                       ? RelaxationMethod::fire
+                       : RelaxationMethod::viscous;
+  else if (r.has("relaxation"))
+    r.error("relaxation", "needs integration = \"quasi_static\": a dynamic run does not relax");
   r.finish();
 }
 

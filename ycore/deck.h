@@ -61,6 +61,8 @@ struct CrackSegmentDeck {
   std::string where;
 };
 
+enum class RelaxationMethod { viscous, fire };
+
 struct Deck {
   std::string path;  // the deck file as given
 
@@ -108,6 +110,9 @@ struct Deck {
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
   bool node_mass_scaling = true;      // quasi-static: nodes stiff for their mass made heavier
+  // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood) or
+  // "fire" (FIRE, Bitzek et al. 2006); ycore/relaxation.cpp.
+  RelaxationMethod relaxation = RelaxationMethod::viscous;
   // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
   // instead of relaxing to equilibrium after each coupling step.
   bool dynamic = false;

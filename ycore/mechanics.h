@@ -59,6 +59,7 @@ void joint_nodal_forces(const State& state, std::size_t j, double out[8]);
 struct RelaxationControls {
   double tolerance = 1e-7;          // out-of-balance force ratio that ends it
   std::int64_t max_steps = 200000;  // step cap
+  RelaxationMethod method = RelaxationMethod::viscous;
 };
 
 struct RelaxationResult {
@@ -68,9 +69,9 @@ struct RelaxationResult {
 };
 
 // One quasi-static step of the solid over `coupling_dt` seconds of the moisture clock:
-// driven nodes move by velocity x coupling_dt, then explicit central-difference steps with
-// adaptive mass-proportional damping run until the out-of-balance ratio is below the
-// tolerance. Velocities are left as displacement / coupling_dt (physical), reactions and
+// driven nodes move by velocity x coupling_dt, then explicit central-difference steps, damped
+// by adaptive mass-proportional damping or steered by FIRE (controls.method), run until the
+// out-of-balance ratio is below the tolerance. Velocities are left as displacement / coupling_dt (physical), reactions and
 // boundary and gravity work are booked.
 RelaxationResult relax(State& state, const RelaxationControls& controls, double coupling_dt);
 

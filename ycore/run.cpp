@@ -42,7 +42,7 @@ std::vector<std::uint8_t> triangles_with_moisture(const State& s, const Deck& de
 }
 
 RelaxationControls relaxation_controls(const Deck& deck) {
-  return {deck.relaxation_tolerance, deck.relaxation_max_steps};
+  return {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation};
 }
 
 // The corners of the top-right vertex of the breakable material (the largest x, then the
@@ -173,7 +173,9 @@ void log_set_up(Log& log, const State& state, const Deck& deck, double max_step,
   steps << "coupling step " << max_step << " s (moisture safety " << deck.moisture_safety << ")";
   if (deck.mechanics)
     steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
-          << deck.joint_penalty << " E, relaxation tolerance " << deck.relaxation_tolerance << ", cap "
+          << deck.joint_penalty << " E, "
+          << (deck.dynamic ? "no" : deck.relaxation == RelaxationMethod::fire ? "FIRE" : "viscous")
+          << " relaxation, tolerance " << deck.relaxation_tolerance << ", cap "
           << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
           << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
           << " steps, residual " << state.mechanics.last_residual << "; contact penalty "
