@@ -19,8 +19,9 @@
 //   starts again. The norms and the direction are taken in mass-weighted coordinates
 //   (sqrt(m) v and f / sqrt(m)), so the scaled masses change the metric, not the method.
 //   The pseudo-step grows by 1.1 a step (after the same 5) up to the stable one and halves
-//   at each restart. It reaches the tolerance where the damping stops at the cap, but
-//   starts from the last equilibrium, not an extrapolated one (see predict_equilibrium).
+//   at each restart. It reaches the tolerance in many relaxations where the damping stops
+//   at the cap (Peron: 88 of 231 capped against 156), and starts from the last
+//   equilibrium, not an extrapolated one (see predict_equilibrium).
 //
 // Only the equilibrium reached means anything; the path in pseudo-time does not, except
 // where the state has history (contact friction, which slips along it).
