@@ -79,6 +79,11 @@ bool may_touch(const State& s, index_t i, index_t e) {
 void build_contact_pairs(State& s) {
   Nodes& n = s.nodes;
   Contact& c = s.contact;
+  // A non-finite position has no cell (casting it to an index is undefined): the pairs stay
+  // as they are, and the relaxation reports the state after this force evaluation.
+  if (!std::all_of(c.surface_node.begin(), c.surface_node.end(),
+                   [&](index_t i) { return std::isfinite(n.x[i]) && std::isfinite(n.y[i]); }))
+    return;
   const double reach2 = 4.0 * c.buffer_m * c.buffer_m;
   struct Pair { index_t node, edge; };
   std::vector<Pair> pairs;
