@@ -51,7 +51,7 @@ struct ForceMeasures {
 
 // Adds the joint and contact forces to the node forces (through each node's joint slots and
 // contact gather list) and measures.
-ForceMeasures gather_interaction_forces(State& s) {
+ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
   Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   const std::vector<double>& jf = s.joints.force;
@@ -77,8 +77,10 @@ ForceMeasures gather_interaction_forces(State& s) {
       sum[0] += f * f;
       sum[2] -= u * (f - f_previous);
       sum[3] += n.m[i] * u * u;
-      sum[4] += f * u;
-      sum[5] += f * f / n.m[i];
+      if (fire_measures) {  // a division per component: only where FIRE reads them
+        sum[4] += f * u;
+        sum[5] += f * f / n.m[i];
+      }
     };
     if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i], mech.fx_previous[i]);
     if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i], mech.fy_previous[i]);
@@ -88,11 +90,12 @@ ForceMeasures gather_interaction_forces(State& s) {
   return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
 }
 
-ForceMeasures compute_forces(State& s, double dt) {
+// FIRE's measures (power, f.M^-1 f) only with fire_measures.
+ForceMeasures compute_forces(State& s, double dt, bool fire_measures = false) {
   element_forces(s);
   joint_forces(s, dt);
   contact_forces(s, dt);
-  return gather_interaction_forces(s);
+  return gather_interaction_forces(s, fire_measures);
 }
 
 // One pseudo-step of length `step`: v = scale (keep v + (step + steer) f / m), x += v step.
@@ -269,7 +272,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   start_motion(s);
   if (controls.method == RelaxationMethod::viscous) predict_equilibrium(s, coupling_dt, dt);
   move_driven_nodes(s, coupling_dt, dt);
-  ForceMeasures measures = compute_forces(s, dt);
+  const bool fire_measures = controls.method == RelaxationMethod::fire;
+  ForceMeasures measures = compute_forces(s, dt, fire_measures);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
@@ -288,9 +292,9 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   FireSteering fire(dt);
   double damping = 0.0;
   while (!balanced(measures) && result.steps < controls.max_steps) {
-    const VelocityUpdate update = controls.method == RelaxationMethod::fire ? fire.next(measures) : viscous_update(damping, dt);
+    const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
     integrate_nodes(s, update);
-    measures = compute_forces(s, update.step);
+    measures = compute_forces(s, update.step, fire_measures);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
     if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
