@@ -50,7 +50,7 @@ bool touches(const Nodes& n, const Contact& c, index_t i, const EdgeProjection& 
 
 }  // namespace
 
-void contact_forces(State& s, double dt) {
+void contact_forces(State& s, double dt, FrictionUpdate friction) {
   Contact& c = s.contact;
   if (c.penalty_pa <= 0.0) return;
   if (contact_pairs_stale(s)) build_contact_pairs(s);
@@ -98,7 +98,8 @@ void contact_forces(State& s, double dt) {
     const double approach = vx * at.ty - vy * at.tx;                  // < 0: closing
     const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
     // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
-    // motion and slides, keeping the stretch at the cap, once it would pull harder than mu f_n.
+    // motion and pulls at most mu f_n; it slides, keeping the stretch at the cap, at every
+    // step or only at equilibrium (FrictionUpdate).
     double& slip = c.pair_slip[active];
     slip += (vx * at.tx + vy * at.ty) * dt;
     const double cap = c.tan_friction[s.triangles.material[triangle_of(i)] * nm +
@@ -106,7 +107,7 @@ void contact_forces(State& s, double dt) {
     double tangential = -stiffness * slip;
     if (std::fabs(tangential) > cap) {
       tangential = std::copysign(cap, tangential);
-      slip = -tangential / stiffness;
+      if (friction == FrictionUpdate::every_step) slip = -tangential / stiffness;
     }
     const double fx = normal * at.ty + tangential * at.tx, fy = -normal * at.tx + tangential * at.ty;
     double* force = &c.pair_force[6 * std::size_t(active)];
@@ -117,5 +118,9 @@ void contact_forces(State& s, double dt) {
   }, c.corner_owner_begin);
   c.work_J += work[0];
 }
+
+// At dt = 0 nothing moves and no work is done: the forces are the last call's, and every
+// slip past its cap slides back to it.
+void commit_friction_slip(State& s) { contact_forces(s, 0.0, FrictionUpdate::every_step); }
 
 }  // namespace ydry

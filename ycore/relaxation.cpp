@@ -1,16 +1,16 @@
 // Quasi-static relaxation of the solid (DESIGN section 4, step 3 of the coupling loop).
 //
 // Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
+// from the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
 // brought to rest by one of two methods (solver.relaxation):
 //
 // - "viscous" (default): mass-proportional damping c = 2 omega, omega^2 the Rayleigh quotient
 //   -v.(f_new - f_old) / (dt v.M v) of the last step's motion (Underwood's adaptive dynamic
 //   relaxation, with the step's velocity in place of the total displacement: a boundary that
 //   moved the solid rigidly does not fool it into no damping). As the fast modes die out the
-//   damping tends to critical for the slowest mode the load excites. Each relaxation starts
-//   from the equilibrium extrapolated along the last one's motion (predict_equilibrium).
-//   Near a limit point (a softening crack tip, a block rocking on its contacts) the slowest
-//   mode is so slow that most of the Peron relaxations stop at their cap.
+//   damping tends to critical for the slowest mode the load excites. Near a limit point (a
+//   softening crack tip, a block rocking on its contacts) the slowest mode is so slow that
+//   most of the Peron relaxations stop at their cap.
 // - "fire": the Fast Inertial Relaxation Engine (Bitzek, Koskinen, Gähler, Moseler, Gumbsch,
 //   Phys. Rev. Lett. 97, 170201, 2006). The motion is undamped, but the velocity is turned
 //   towards the force, v <- (1 - alpha) v + alpha |v| f^, while the power f.v stays
@@ -20,11 +20,12 @@
 //   (sqrt(m) v and f / sqrt(m)), so the scaled masses change the metric, not the method.
 //   The pseudo-step grows by 1.1 a step (after the same 5) up to the stable one and halves
 //   at each restart. It reaches the tolerance in many relaxations where the damping stops
-//   at the cap (Peron: 88 of 231 capped against 156), and starts from the last
-//   equilibrium, not an extrapolated one (see predict_equilibrium).
+//   at the cap, in fewer steps.
 //
-// Only the equilibrium reached means anything; the path in pseudo-time does not, except
-// where the state has history (contact friction, which slips along it).
+// Only the equilibrium reached means anything; the path in pseudo-time does not. The state
+// with history is committed from the equilibrium alone: the joints' damage
+// (commit_joint_damage) and the friction's slip (FrictionUpdate::at_equilibrium), so the two
+// methods find the same equilibria where both converge.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -91,10 +92,10 @@ ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
 }
 
 // FIRE's measures (power, f.M^-1 f) only with fire_measures.
-ForceMeasures compute_forces(State& s, double dt, bool fire_measures = false) {
+ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false) {
   element_forces(s);
   joint_forces(s, dt);
-  contact_forces(s, dt);
+  contact_forces(s, dt, friction);
   return gather_interaction_forces(s, fire_measures);
 }
 
@@ -205,16 +206,13 @@ void start_motion(State& s) {
 
 // Moves the free nodes on along the last coupling step's motion (the velocities relax leaves
 // behind): drying changes the eigenstrain smoothly, so the extrapolated equilibrium leaves
-// the relaxation only the curvature of the path to remove. The joint damage is committed
-// from the relaxed state only, so a prediction that overshoots leaves no trace. Like the
-// driven nodes' jump, the prediction is seen as a velocity by one force evaluation, so the
-// joints and contacts book its work; prescribed components start at rest.
-// The viscous relaxation only. The friction slips under the jump, so a block that slid in
-// one relaxation is carried on by the next prediction and held there by its friction: a
-// ratchet. With FIRE, which relaxes further, the Peron deck's right end block walked 6.5 um
-// a relaxation over the run's last 60,000 s (0.19 mm in all; with the damping 0.1 um); from
-// the same checkpoint (403,000 s) without the prediction, FIRE's relaxations ended in 0
-// steps from 412,000 s on: the load had stopped changing.
+// the relaxation only the curvature of the path to remove. The joint damage and the friction
+// slip are committed from the relaxed state only, so a prediction that overshoots leaves no
+// trace. (When the friction slid at every pseudo-step, it did: a block that slid in one
+// relaxation was carried on by the next prediction and held where it was put, a ratchet
+// that walked the Peron deck's right end block 6.5 um a relaxation after the drying had
+// stopped.) Like the driven nodes' jump, the prediction is seen as a velocity by one force
+// evaluation, so the joints and contacts book its work; prescribed components start at rest.
 void predict_equilibrium(State& s, double coupling_dt, double dt) {
   Nodes& n = s.nodes;
   for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
@@ -270,10 +268,12 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
   start_motion(s);
-  if (controls.method == RelaxationMethod::viscous) predict_equilibrium(s, coupling_dt, dt);
+  predict_equilibrium(s, coupling_dt, dt);
   move_driven_nodes(s, coupling_dt, dt);
   const bool fire_measures = controls.method == RelaxationMethod::fire;
-  ForceMeasures measures = compute_forces(s, dt, fire_measures);
+  // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium).
+  const FrictionUpdate friction = FrictionUpdate::at_equilibrium;
+  ForceMeasures measures = compute_forces(s, dt, friction, fire_measures);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
@@ -294,7 +294,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   while (!balanced(measures) && result.steps < controls.max_steps) {
     const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
     integrate_nodes(s, update);
-    measures = compute_forces(s, update.step, fire_measures);
+    measures = compute_forces(s, update.step, friction, fire_measures);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
     if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
@@ -302,6 +302,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     result.residual = measures.ratio();
   }
   result.capped = !balanced(measures);
+  commit_friction_slip(s);
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
@@ -317,14 +318,14 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   start_motion(s);
   RelaxationResult result;
   // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
-  ForceMeasures measures = compute_forces(s, 0.0);
+  ForceMeasures measures = compute_forces(s, 0.0, FrictionUpdate::every_step);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a dynamic step");
   const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
   const double dt = coupling_dt / double(substeps);
   for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
     move_driven_nodes(s, dt, dt);
     integrate_nodes(s, viscous_update(0.0, dt));
-    measures = compute_forces(s, dt);
+    measures = compute_forces(s, dt, FrictionUpdate::every_step);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
   }
