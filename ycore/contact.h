@@ -51,8 +51,8 @@ enum class FrictionUpdate {
 // phase first when a surface corner has moved more than the buffer.
 void contact_forces(State& state, double dt, FrictionUpdate friction = FrictionUpdate::every_step);
 
-// Slides every friction slip past its cap back to it, at the current positions (the forces
-// are those of the last contact_forces call there): the end of a quasi-static relaxation.
+// Slides every friction slip past its cap back to it, the caps those of the current positions
+// and velocities: the end of a quasi-static relaxation.
 void commit_friction_slip(State& state);
 
 // Upper bound of the stiffness one node can get from contact, N/m (for the stable step).

@@ -119,8 +119,8 @@ void contact_forces(State& s, double dt, FrictionUpdate friction) {
   c.work_J += work[0];
 }
 
-// At dt = 0 nothing moves and no work is done: the forces are the last call's, and every
-// slip past its cap slides back to it.
+// A force evaluation of zero length: nothing moves, no work is booked, and every slip past its
+// cap slides back to it.
 void commit_friction_slip(State& s) { contact_forces(s, 0.0, FrictionUpdate::every_step); }
 
 }  // namespace ydry
