@@ -9,6 +9,9 @@ whose socket it can bind, the bind being what is atomic) and writes it back once
 connections, so the display handed out is the server's own and ready. Such a server writes no
 /tmp/.XN-lock, so an `Xvfb :N` started by hand meanwhile may find :N taken.
 The server dies with the process that started it (PR_SET_PDEATHSIG), even one killed with -9.
+It runs with -noreset: an X server resets when its last client leaves, and drops a client that
+connects meanwhile; pvbatch connects and leaves several times before it opens its window, so
+without it one start in ten to forty (more on a busy machine) ended in "bad X server connection".
 
     with virtual_display() as display:
         subprocess.run(command, env={**os.environ, "DISPLAY": display})
@@ -52,7 +55,7 @@ def virtual_display():
         read_end, write_end = os.pipe()
         try:
             server = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", SCREEN,
-                                       "-nolisten", "tcp"], pass_fds=(write_end,), preexec_fn=die_with_parent,
+                                       "-nolisten", "tcp", "-noreset"], pass_fds=(write_end,), preexec_fn=die_with_parent,
                                       stdin=subprocess.DEVNULL, stdout=log, stderr=log)
         except OSError as error:
             os.close(read_end)
