@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "tests/test_support.h"
 #include "ycore/contact.h"
@@ -128,6 +129,82 @@ TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(p
   CHECK(s.contact.work_J > 0.0);  // friction took work out of the sliding
 }
 
+// The lagged cap (contact.friction_cap = "last_equilibrium"): pressed twice as deep after an
+// equilibrium, the faces slide in a relaxation at tan(phi) x the normal force of that
+// equilibrium; committed there, at tan(phi) x the new one. The current cap has the new one
+// at once.
+TEST_CASE("the lagged friction cap is tan(phi) x the normal force of the last equilibrium until the next",
+          "[contact]") {
+  for (const bool lagged : {false, true}) {
+    ydry_test::TempDir dir;
+    State s = two_triangles(dir);
+    s.contact.lagged_friction_cap = lagged;
+    const double depth = 1.0e-6;
+    const Face face = press_through_broken_joint(s, depth);
+    commit_friction_slip(s);  // the equilibrium: normal force p_n t g
+    move_second_triangle(s, -depth * face.ty, depth * face.tx);  // then twice as deep
+    const index_t t = triangle_of(s.joints.node[2]);
+    for (int a = 0; a < 3; ++a) {
+      s.nodes.vx[corner_node(t, a)] = 1e-3 * face.tx;
+      s.nodes.vy[corner_node(t, a)] = 1e-3 * face.ty;
+    }
+    const index_t corner = s.joints.node[3];
+    const double tan_phi = std::tan(30.0 * M_PI / 180.0), normal = kPenalty * kThickness * depth;
+    for (int step = 0; step < 2000; ++step) contact_forces(s, 1e-6, FrictionUpdate::at_equilibrium);  // 2 um
+    CHECK(pressed_corner_force(s, corner, face).first == Approx(2.0 * normal).epsilon(1e-9));
+    CHECK(pressed_corner_force(s, corner, face).second == Approx(-tan_phi * (lagged ? 1.0 : 2.0) * normal).epsilon(1e-9));
+    commit_friction_slip(s);
+    contact_forces(s, 0.0, FrictionUpdate::at_equilibrium);
+    CHECK(pressed_corner_force(s, corner, face).second == Approx(-tan_phi * 2.0 * normal).epsilon(1e-9));
+  }
+}
+
+// The block at rest on its base (verification/contact_rest) is meshed like the base, so the
+// corners of its bottom sit on junctions of two base edges. Moved 3 nm to the right, each
+// stuck corner's friction changes by its stiffness x 3 nm, whether or not its contact passed
+// to the next base edge.
+TEST_CASE("a corner's friction is kept when its contact passes to the next edge of a surface", "[contact]") {
+  State s = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  const Contact& c = s.contact;
+  const auto active_pairs = [&] {  // free corner -> its pair with a force, against the base
+    std::map<index_t, std::size_t> active;
+    for (std::size_t p = 0; p < c.pair_node.size(); ++p)
+      if (!s.nodes.constraint[c.pair_node[p]] && (c.pair_force[6 * p] != 0.0 || c.pair_force[6 * p + 1] != 0.0))
+        active[c.pair_node[p]] = p;
+    return active;
+  };
+  const auto tangential = [&](std::size_t p) {  // along the base edge, which runs right to left
+    const index_t e = c.pair_edge[p], f = next_corner(e);
+    const double tx = s.nodes.x[f] - s.nodes.x[e], ty = s.nodes.y[f] - s.nodes.y[e];
+    return (c.pair_force[6 * p] * tx + c.pair_force[6 * p + 1] * ty) / std::hypot(tx, ty);
+  };
+  const auto normal = [&](std::size_t p) { return std::hypot(c.pair_force[6 * p], c.pair_force[6 * p + 1]); };
+  contact_forces(s, 0.0, FrictionUpdate::at_equilibrium);
+  const auto before = active_pairs();
+  std::map<index_t, double> friction_before;
+  for (const auto& [corner, p] : before) friction_before[corner] = tangential(p);
+
+  constexpr double kMove = 3e-9, kStep = 1.0;  // m, s
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    if (!s.nodes.constraint[i]) s.nodes.x[i] += kMove, s.nodes.vx[i] = kMove / kStep;
+  contact_forces(s, kStep, FrictionUpdate::at_equilibrium);
+  const auto after = active_pairs();
+  REQUIRE(after.size() == before.size());
+  int checked = 0, passed_on = 0;
+  for (const auto& [corner, p] : after) {
+    const double stiffness =
+        0.5 * c.penalty_pa * s.mechanics.thickness_m * (c.is_surface_edge[corner] + c.is_surface_edge[previous_corner(corner)]);
+    // The slip along the edge grows by -3 nm; the spring pulls against it.
+    const double expected = friction_before[corner] + stiffness * kMove;
+    if (std::fabs(expected) > 0.9 * std::tan(20.0 * M_PI / 180.0) * normal(p)) continue;  // near its cap
+    ++checked;
+    passed_on += c.pair_edge[p] != c.pair_edge[before.at(corner)];
+    CHECK(tangential(p) == Approx(expected).epsilon(1e-6));
+  }
+  CHECK(checked > 10);
+  CHECK(passed_on > 2);  // the move did carry corners over junctions
+}
+
 TEST_CASE("no contact force between triangles still tied by an intact joint, however they overlap",
           "[contact]") {
   ydry_test::TempDir dir;
@@ -166,18 +243,21 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
 // (Sliding at every pseudo-step, it stayed 99.998 % of the carry away.)
 TEST_CASE("a block carried off its rest by the extrapolated start is pulled back by its friction",
           "[contact][mechanics]") {
-  const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {});
-  const State rest = setup_state(deck);
   constexpr double kCarry = 1e-4, kCouplingStep = 1.0;  // m, s
-  for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire}) {
-    State s = rest;
-    for (std::size_t i = 0; i < s.nodes.size(); ++i)
-      if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
-    const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method}, kCouplingStep);
-    REQUIRE_FALSE(result.capped);
-    double farthest = 0.0;
-    for (std::size_t i = 0; i < s.nodes.size(); ++i)
-      farthest = std::max(farthest, std::fabs(s.nodes.x[i] - rest.nodes.x[i]));
-    CHECK(farthest < 1e-3 * kCarry);
+  for (const std::string cap : {"current", "last_equilibrium"}) {
+    const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml",
+                                             {"contact.friction_cap=" + cap}));
+    for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire}) {
+      INFO("friction cap " << cap << ", relaxation " << (method == RelaxationMethod::fire ? "fire" : "viscous"));
+      State s = rest;
+      for (std::size_t i = 0; i < s.nodes.size(); ++i)
+        if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
+      const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method}, kCouplingStep);
+      REQUIRE_FALSE(result.capped);
+      double farthest = 0.0;
+      for (std::size_t i = 0; i < s.nodes.size(); ++i)
+        farthest = std::max(farthest, std::fabs(s.nodes.x[i] - rest.nodes.x[i]));
+      CHECK(farthest < 1e-3 * kCarry);
+    }
   }
 }
