@@ -129,36 +129,6 @@ TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(p
   CHECK(s.contact.work_J > 0.0);  // friction took work out of the sliding
 }
 
-// The lagged cap (contact.friction_cap = "last_equilibrium"): pressed twice as deep after an
-// equilibrium, the faces slide in a relaxation at tan(phi) x the normal force of that
-// equilibrium; committed there, at tan(phi) x the new one. The current cap has the new one
-// at once.
-TEST_CASE("the lagged friction cap is tan(phi) x the normal force of the last equilibrium until the next",
-          "[contact]") {
-  for (const bool lagged : {false, true}) {
-    ydry_test::TempDir dir;
-    State s = two_triangles(dir);
-    s.contact.lagged_friction_cap = lagged;
-    const double depth = 1.0e-6;
-    const Face face = press_through_broken_joint(s, depth);
-    commit_friction_slip(s);  // the equilibrium: normal force p_n t g
-    move_second_triangle(s, -depth * face.ty, depth * face.tx);  // then twice as deep
-    const index_t t = triangle_of(s.joints.node[2]);
-    for (int a = 0; a < 3; ++a) {
-      s.nodes.vx[corner_node(t, a)] = 1e-3 * face.tx;
-      s.nodes.vy[corner_node(t, a)] = 1e-3 * face.ty;
-    }
-    const index_t corner = s.joints.node[3];
-    const double tan_phi = std::tan(30.0 * M_PI / 180.0), normal = kPenalty * kThickness * depth;
-    for (int step = 0; step < 2000; ++step) contact_forces(s, 1e-6, FrictionUpdate::at_equilibrium);  // 2 um
-    CHECK(pressed_corner_force(s, corner, face).first == Approx(2.0 * normal).epsilon(1e-9));
-    CHECK(pressed_corner_force(s, corner, face).second == Approx(-tan_phi * (lagged ? 1.0 : 2.0) * normal).epsilon(1e-9));
-    commit_friction_slip(s);
-    contact_forces(s, 0.0, FrictionUpdate::at_equilibrium);
-    CHECK(pressed_corner_force(s, corner, face).second == Approx(-tan_phi * 2.0 * normal).epsilon(1e-9));
-  }
-}
-
 // The block at rest on its base (verification/contact_rest) is meshed like the base, so the
 // corners of its bottom sit on junctions of two base edges. Moved 3 nm to the right, each
 // stuck corner's friction changes by its stiffness x 3 nm, whether or not its contact passed
@@ -243,21 +213,18 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
 // (Sliding at every pseudo-step, it stayed 99.998 % of the carry away.)
 TEST_CASE("a block carried off its rest by the extrapolated start is pulled back by its friction",
           "[contact][mechanics]") {
+  const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
   constexpr double kCarry = 1e-4, kCouplingStep = 1.0;  // m, s
-  for (const std::string cap : {"current", "last_equilibrium"}) {
-    const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml",
-                                             {"contact.friction_cap=" + cap}));
-    for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire}) {
-      INFO("friction cap " << cap << ", relaxation " << (method == RelaxationMethod::fire ? "fire" : "viscous"));
-      State s = rest;
-      for (std::size_t i = 0; i < s.nodes.size(); ++i)
-        if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
-      const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method}, kCouplingStep);
-      REQUIRE_FALSE(result.capped);
-      double farthest = 0.0;
-      for (std::size_t i = 0; i < s.nodes.size(); ++i)
-        farthest = std::max(farthest, std::fabs(s.nodes.x[i] - rest.nodes.x[i]));
-      CHECK(farthest < 1e-3 * kCarry);
-    }
+  for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire}) {
+    INFO("relaxation " << (method == RelaxationMethod::fire ? "fire" : "viscous"));
+    State s = rest;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
+    const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method}, kCouplingStep);
+    REQUIRE_FALSE(result.capped);
+    double farthest = 0.0;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      farthest = std::max(farthest, std::fabs(s.nodes.x[i] - rest.nodes.x[i]));
+    CHECK(farthest < 1e-3 * kCarry);
   }
 }

@@ -123,11 +123,6 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
        "solver.relaxation: needs integration = \"quasi_static\""},
       {"an unknown relaxation method", "", "", "--set solver.relaxation=cg",
        "solver.relaxation: \"cg\" is not one of \"viscous\", \"fire\""},
-      {"a lagged friction cap in a dynamic run", "", "",
-       "--set solver.integration=dynamic --set solver.node_mass_scaling=false --set contact.friction_cap=last_equilibrium",
-       "contact.friction_cap: needs solver.integration = \"quasi_static\""},
-      {"an unknown friction cap", "", "", "--set contact.friction_cap=previous",
-       "contact.friction_cap: \"previous\" is not one of \"current\", \"last_equilibrium\""},
       {"relaxations rarer than the rows of the tables", "", "", "--set solver.mechanics_interval=60",
        "solver.mechanics_interval: is longer than run.series_interval"},
   };

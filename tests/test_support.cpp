@@ -73,7 +73,6 @@ Snapshot state_snapshot(const ydry::State& s) {
       {"contact gather offsets", as_doubles(c.gather_offset)},
       {"contact gather entries", as_doubles(c.gather_entry)},
       {"contact pair slip", c.pair_slip},
-      {"contact pair equilibrium normal", c.pair_equilibrium_normal},
       {"contact pair force", c.pair_force},
       {"contact built at x", c.x_built},
       {"contact built at y", c.y_built},

@@ -53,7 +53,6 @@ void for_each_state_field(S& s, Field&& field) {
   field("contact.pair_node", s.contact.pair_node);
   field("contact.pair_edge", s.contact.pair_edge);
   field("contact.pair_slip", s.contact.pair_slip);
-  field("contact.pair_equilibrium_normal", s.contact.pair_equilibrium_normal);
   field("contact.pair_force", s.contact.pair_force);
   field("contact.x_built", s.contact.x_built);
   field("contact.y_built", s.contact.y_built);
@@ -92,9 +91,8 @@ void require_finite(const Checkpoint& c, const std::vector<double>& v, const cha
 void check_contact_pairs(const State& s, const Checkpoint& checkpoint) {
   const Contact& c = s.contact;
   const std::size_t np = c.pair_node.size(), surfaces = c.is_surface_edge.size();  // 0 without mechanics
-  if (c.pair_edge.size() != np || c.pair_slip.size() != np || c.pair_equilibrium_normal.size() != np ||
-      c.pair_force.size() != 6 * np)
-    throw InputError(checkpoint.source + ": contact pairs: node, edge, slip, normal and force lists of different lengths");
+  if (c.pair_edge.size() != np || c.pair_slip.size() != np || c.pair_force.size() != 6 * np)
+    throw InputError(checkpoint.source + ": contact pairs: node, edge, slip and force lists of different lengths");
   for (std::size_t k = 0; k < np; ++k) {
     const index_t i = c.pair_node[k], e = c.pair_edge[k];
     const bool in_order = k == 0 || c.pair_node[k - 1] < i || (c.pair_node[k - 1] == i && c.pair_edge[k - 1] < e);
@@ -203,7 +201,6 @@ void restore_state(State& s, const Checkpoint& c) {
   c.take("contact.pair_node", pairs);
   for (auto* v : {&s.contact.pair_node, &s.contact.pair_edge}) v->resize(pairs.size());
   s.contact.pair_slip.resize(pairs.size());
-  s.contact.pair_equilibrium_normal.resize(pairs.size());
   s.contact.pair_force.resize(6 * pairs.size());
   for_each_state_field(s, [&](const std::string& name, auto& value) {
     if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {

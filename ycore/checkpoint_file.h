@@ -27,8 +27,7 @@
 
 namespace ydry {
 
-// 2: contact.pair_equilibrium_normal (and the deck's contact.friction_cap) added.
-constexpr std::uint32_t kCheckpointFormat = 2;
+constexpr std::uint32_t kCheckpointFormat = 1;
 
 // FNV-1a, 64 bits, of `bytes`, continuing from `hash`.
 std::uint64_t fnv1a64(const char* bytes, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ull);

@@ -43,13 +43,6 @@ enum class FrictionUpdate {
   // relaxation took to it: a block moved too far by the extrapolated start, or by a
   // relaxation's overshoot, is pulled back to where the drying puts it instead of being held
   // where it was carried.
-  // The cap is mu f_n of the current normal force, unless contact.lagged_friction_cap: then
-  // it is mu f_n of the pair's normal force at the last equilibrium, fixed for the whole
-  // relaxation. A cap that follows f_n(x) makes the friction's stiffness unsymmetric, so the
-  // relaxed system is not the gradient of an energy, and a corner at a notch that is pressed
-  // and slides can keep a relaxation from settling (bench/RESULTS.md, session 14); a fixed
-  // cap makes it one, at the price of a cap one relaxation late (commit_friction_slip brings
-  // the slip within the current cap).
   at_equilibrium,
 };
 

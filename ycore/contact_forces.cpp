@@ -80,20 +80,19 @@ void contact_forces(State& s, double dt, FrictionUpdate friction) {
       for (int k = 0; k < 3; ++k) sum_fv += force[2 * k] * n.vx[receivers[k]] + force[2 * k + 1] * n.vy[receivers[k]];
       return sum_fv;
     };
-    // The friction history is the corner's: when its contact passes from one edge to the next
-    // (every corner of a conforming interface sits on a junction of two edges), the slip and
-    // the equilibrium normal force of the pair it touched last (the only other pair with any)
-    // pass to the new one, the slip projected on the new edge. A corner out of contact has none.
+    // The friction slip is the corner's: when its contact passes from one edge to the next
+    // (every corner of a conforming interface sits on a junction of two edges), the slip of the
+    // pair it touched last (the only other pair with one) passes to the new pair, projected on
+    // the new edge. A corner out of contact has none.
     for (index_t p = first; p < last; ++p) {
       sum[0] -= 0.5 * power(p) * dt;
       for (int d = 0; d < 6; ++d) c.pair_force[6 * std::size_t(p) + d] = 0.0;
-      if (p == active || (c.pair_slip[p] == 0.0 && c.pair_equilibrium_normal[p] < 0.0)) continue;
+      if (p == active || c.pair_slip[p] == 0.0) continue;
       if (active != last) {
         const EdgeProjection before = project(n, i, c.pair_edge[p]);
         c.pair_slip[active] = c.pair_slip[p] * (before.tx * at.tx + before.ty * at.ty);
-        c.pair_equilibrium_normal[active] = c.pair_equilibrium_normal[p];
       }
-      c.pair_slip[p] = 0.0, c.pair_equilibrium_normal[p] = -1.0;
+      c.pair_slip[p] = 0.0;
     }
     if (active == last) return;
 
@@ -109,16 +108,11 @@ void contact_forces(State& s, double dt, FrictionUpdate friction) {
     const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
     // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
     // motion and pulls at most mu f_n; it slides, keeping the stretch at the cap, at every
-    // step or only at equilibrium (FrictionUpdate). With the lagged cap, f_n is the pair's
-    // normal force at the last equilibrium while a relaxation runs (the current one for a
-    // pair that was not in contact then).
+    // step or only at equilibrium (FrictionUpdate).
     double& slip = c.pair_slip[active];
     slip += (vx * at.tx + vy * at.ty) * dt;
-    double& equilibrium_normal = c.pair_equilibrium_normal[active];
-    if (friction == FrictionUpdate::every_step) equilibrium_normal = normal;
-    const bool lagged = c.lagged_friction_cap && equilibrium_normal >= 0.0;
     const double cap = c.tan_friction[s.triangles.material[triangle_of(i)] * nm +
-                                      s.triangles.material[triangle_of(e)]] * (lagged ? equilibrium_normal : normal);
+                                      s.triangles.material[triangle_of(e)]] * normal;
     double tangential = -stiffness * slip;
     if (std::fabs(tangential) > cap) {
       tangential = std::copysign(cap, tangential);

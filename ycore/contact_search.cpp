@@ -109,9 +109,8 @@ void build_contact_pairs(State& s) {
     return a.node != b.node ? a.node < b.node : a.edge < b.edge;
   });
 
-  // Continuing pairs keep their friction slip, equilibrium normal force and last force (both
-  // lists are sorted).
-  std::vector<double> slip(pairs.size(), 0.0), equilibrium_normal(pairs.size(), -1.0), force(6 * pairs.size(), 0.0);
+  // Continuing pairs keep their friction slip and last force (both lists are sorted).
+  std::vector<double> slip(pairs.size(), 0.0), force(6 * pairs.size(), 0.0);
   for (std::size_t k = 0, old = 0; k < pairs.size(); ++k) {
     while (old < c.pair_node.size() &&
            (c.pair_node[old] < pairs[k].node || (c.pair_node[old] == pairs[k].node && c.pair_edge[old] < pairs[k].edge)))
@@ -119,12 +118,10 @@ void build_contact_pairs(State& s) {
     if (old < c.pair_node.size() && c.pair_node[old] == pairs[k].node && c.pair_edge[old] == pairs[k].edge)
     {
       slip[k] = c.pair_slip[old];
-      equilibrium_normal[k] = c.pair_equilibrium_normal[old];
       std::copy_n(&c.pair_force[6 * old], 6, &force[6 * k]);
     }
   }
   c.pair_slip = std::move(slip);
-  c.pair_equilibrium_normal = std::move(equilibrium_normal);
   c.pair_force = std::move(force);
   c.pair_node.resize(pairs.size());
   c.pair_edge.resize(pairs.size());

@@ -14,7 +14,6 @@ void init_contact(State& s, const Deck& deck) {
   Contact& c = s.contact;
   c.penalty_pa = deck.contact_penalty_pa.value_or(0.0);
   c.damping_ratio = deck.contact_damping;
-  c.lagged_friction_cap = deck.lagged_friction_cap;
   const std::size_t nm = s.material_names.size();
   c.tan_friction.assign(nm * nm, 0.0);
   for (const auto& [pair, degrees] : deck.friction_deg) {

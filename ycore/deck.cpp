@@ -200,11 +200,6 @@ void read_contact(TableReader r, Deck& d, const Origin& file) {
   d.contact_penalty_pa = stiffest ? r.number("penalty", kPositive, 10.0 * *stiffest)
                                   : r.optional_number("penalty", kPositive);
   d.contact_damping = r.number("damping", Range{0, 1, false, false}, 0.5);
-  if (!d.dynamic)
-    d.lagged_friction_cap =
-        r.string("friction_cap", {"current", "last_equilibrium"}, std::string("current")) == "last_equilibrium";
-  else if (r.has("friction_cap"))
-    r.error("friction_cap", "needs solver.integration = \"quasi_static\": a dynamic run slides its friction at every step");
   TableReader friction(r.subtable("friction"), "contact.friction", file);
   for (const std::string& key : friction.keys())
     d.friction_deg[material_pair(key, d, friction)] = friction.number(key, Range{0, 90, false, true}, std::nullopt);
@@ -261,8 +256,8 @@ Deck read_deck(const std::string& text, const std::string& path, const std::vect
   read_moisture(TableReader(top.subtable("moisture"), "moisture", origin), d, origin);
   if (toml::array* cracks = top.table_array("cracks")) read_cracks(*cracks, d, origin);
   read_mechanics(TableReader(top.subtable("mechanics"), "mechanics", origin), d, origin);
+  read_contact(TableReader(top.subtable("contact"), "contact", origin), d, origin);
   read_solver(TableReader(top.subtable("solver"), "solver", origin), d);
-  read_contact(TableReader(top.subtable("contact"), "contact", origin), d, origin);  // after: needs d.dynamic
   top.finish();
 
   if (d.output_interval_s > d.end_time_s)

@@ -100,9 +100,6 @@ struct Deck {
   std::optional<double> contact_penalty_pa;  // Pa, normal penalty (default 10 x the largest E)
   std::map<std::pair<std::string, std::string>, double> friction_deg;  // sorted name pair
   double contact_damping = 0.5;  // normal dashpot, fraction of critical
-  // Friction cap in a quasi-static relaxation: mu x the current normal force ("current") or
-  // x the normal force of the last equilibrium ("last_equilibrium"); ycore/contact.h.
-  bool lagged_friction_cap = false;
 
   // [solver]
   double moisture_safety = 0.9;  // fraction of the explicit stability limit

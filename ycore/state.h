@@ -146,8 +146,6 @@ struct Contact {
   double damping_ratio = 0;           // normal dashpot, fraction of critical
   double buffer_m = 0;                // candidates are kept within 2 buffers; rebuilt when a
                                       // surface node has moved more than one
-  bool lagged_friction_cap = false;   // in a relaxation, cap the friction by the normal force of
-                                      // the last equilibrium (contact.friction_cap)
   // Surfaces, rebuilt when joints break: triangle edges with no joint or a broken one. An
   // edge is named by its first corner c, and runs counter-clockwise to next_corner(c).
   std::vector<index_t> surface_edge;  // first corners, ascending
@@ -158,8 +156,6 @@ struct Contact {
   std::vector<index_t> node_pairs;    // CSR: pairs of the k-th distinct node start at node_pairs[k]
   std::vector<std::size_t> corner_owner_begin;  // the corners of each Ownership slot's nodes
   std::vector<double> pair_slip;      // elastic tangential slip of the pair, m (friction history)
-  std::vector<double> pair_equilibrium_normal;  // normal force of the pair at the last
-                                      // equilibrium (or step), N; -1: not in contact then
   std::vector<double> pair_force;     // [6 * pairs] scratch: force on the node, edge a, edge b
   std::vector<index_t> gather_offset; // [nodes + 1] CSR into gather_entry: the pair forces a
   std::vector<index_t> gather_entry;  //   node receives, as 3 pair + slot (0 node, 1 a, 2 b)
