@@ -96,6 +96,17 @@ def final_cracks(run, t, size):
     return sorted(found, key=lambda crack: crack["x"])
 
 
+def end_blocks(cracks, left, right):
+    """The words that name the end blocks, the top between each end and its nearest surface
+    crack: the ends' movements follow their lengths, so a small change of the run that moves
+    the last crack moves the right end with it."""
+    top = [crack["x"] for crack in cracks if crack["surface"]]
+    if not top:
+        return ""
+    return (f"; the end blocks: {left * MM:g} to {top[0] * MM:.1f} mm ({(top[0] - left) * MM:.1f} mm long) and "
+            f"{top[-1] * MM:.1f} to {right * MM:g} mm ({(right - top[-1]) * MM:.1f} mm long)")
+
+
 def surface_mouths(surface, t):
     """The crack mouths on the top surface at time t (surface.csv): one per surface vertex that
     has several points (the sides of a crack, on different segments), each {x: the current x of
@@ -200,8 +211,11 @@ def check_run(run, outdir, verdicts, ydry):
     verdicts.below("right_end_ux_rel_error", ydry_case.relative_error(abs(ux), RIGHT_END_UX), RIGHT_END_TOLERANCE)
     x0_last = surface["x0_m"][last]
     ux_last = surface["ux_m"][last]
+    size = run_report.element_size(surface)
+    cracks = final_cracks(run, t_last, size)
     print(f"# for comparison, the left end (x0 = {x0_last[0] * MM:g} mm): u_x {ux_last[0] * MM:+.4f} mm; "
-          "each end moves about as far as its end block is long (the block shrinks towards its middle)")
+          "an end block shrinks towards its middle, so each end moves with the length of its block"
+          + end_blocks(cracks, x0_last[0], x0_last[-1]))
 
     time = series["time_s"]
     window = time >= (1.0 - STABLE_WINDOW) * time[-1]
@@ -214,8 +228,6 @@ def check_run(run, outdir, verdicts, ydry):
           f"({np.count_nonzero(window)} rows of series.csv)")
     verdicts.below("mean_surface_width_change_last_20pct", change, run_report.STABLE_FRACTION)
 
-    size = run_report.element_size(surface)
-    cracks = final_cracks(run, t_last, size)
     mouths = surface_mouths(surface, t_last)
     gaps = sum(mouth["gap"] for mouth in mouths)
     print(f"# the top surface breaks at {len(mouths)} vertices; their horizontal gaps add up to {gaps * MM:.3f} mm, "
