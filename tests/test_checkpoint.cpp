@@ -167,9 +167,10 @@ TEST_CASE("a damaged, truncated, foreign or mismatched checkpoint is refused wit
   refused(bytes.substr(0, bytes.size() - 100), "", "truncated");
   refused(read_text(run_folder + "/frames/strip1d_000000.vtu"), "", "not a ydry checkpoint");
   std::string newer = bytes;
-  newer[8] = 2;  // the format version
+  newer[8] = char(kCheckpointFormat + 1);  // the format version
   reseal(newer);
-  refused(newer, "", "checkpoint format version 2; this ydry reads version 1");
+  refused(newer, "", "checkpoint format version " + std::to_string(kCheckpointFormat + 1) + "; this ydry reads version " +
+                         std::to_string(kCheckpointFormat));
   refused("", strip + " --set run.end_time=300000", "is not the deck");
   refused("", "--set run.end_time=300000", "--set with --restart");
   refused("", "-o " + dir.file("elsewhere"), "holds no ydry run to continue");
