@@ -14,6 +14,7 @@
 #include "ycore/input_error.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
+#include "ycore/node_integration.h"
 #include "ycore/numerical_failure.h"
 #include "ycore/run.h"
 
@@ -194,6 +195,75 @@ TEST_CASE("the joint kernel's pre-peak pass gives the full traction law's forces
     INFO(threads << " thread(s)");
     CHECK(differing == 0);
   });
+}
+
+TEST_CASE("the element kernel's vectorised loop gives the forces and stresses of its scalar remainder, bit for bit",
+          "[mechanics][threads]") {
+  // The kernel takes the triangles in runs of one material, and vectorises each run four (or
+  // two) triangles at a time; the last triangles of a run go through the loop one by one.
+  // With two copies of one material alternating, every run is one triangle long: all of them
+  // take that scalar path, and must give the bits of the whole mesh in one run.
+  ydry_test::TempDir dir;
+  State s = setup_state(ydry_test::block_deck(dir, "left", {"mesh.size=[0.01, 0.01]"}));
+  REQUIRE(s.triangles.size() > 100);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {  // strains of about 1e-3, rotations
+    s.nodes.x[i] = s.nodes.x0[i] + 1e-6 * unit(rng) - 1e-2 * s.nodes.y0[i];
+    s.nodes.y[i] = s.nodes.y0[i] + 1e-6 * unit(rng) + 1e-2 * s.nodes.x0[i];
+  }
+  for (double& eps : s.triangles.shrinkage_strain) eps = -1e-3 * std::fabs(unit(rng));
+  const auto forces_and_stresses = [&] {
+    element_forces(s);
+    std::vector<double> out = s.nodes.fx;
+    for (const std::vector<double>* v : {&s.nodes.fy, &s.triangles.sxx, &s.triangles.syy, &s.triangles.sxy})
+      out.insert(out.end(), v->begin(), v->end());
+    return out;
+  };
+  ydry_test::on_1_and_2_threads([&](int threads) {
+    INFO(threads << " thread(s)");
+    std::fill(s.triangles.material.begin(), s.triangles.material.end(), std::uint16_t(0));
+    const std::vector<double> one_run = forces_and_stresses();
+    CHECK(std::count(one_run.begin(), one_run.end(), 0.0) == 0);
+    s.materials.resize(1);
+    s.materials.push_back(s.materials[0]);
+    for (std::size_t t = 0; t < s.triangles.size(); t += 2) s.triangles.material[t] = 1;
+    CHECK(ydry_test::same_bits(forces_and_stresses(), one_run));
+  });
+}
+
+TEST_CASE("the node integration moves the free components alone, with the same bits in every lane of its vector loop",
+          "[mechanics]") {
+  // Every node has the same velocity, force and mass, so every free component must come out
+  // the same to the bit, whether the vector loop's body or its scalar remainder did it.
+  ydry_test::TempDir dir;
+  State s = setup_state(ydry_test::block_deck(dir, "left"));
+  Nodes& n = s.nodes;
+  REQUIRE(n.size() > 40);
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    n.x[i] = n.y[i] = 0.1;
+    n.vx[i] = 3e-3, n.vy[i] = -7e-3;
+    n.fx[i] = 0.3, n.fy[i] = 1.1;
+    n.m[i] = 0.7;
+    n.constraint[i] = std::uint8_t(i % 5 == 1 ? kFixX : i % 5 == 3 ? kFixY : 0);
+  }
+  const VelocityUpdate update{0.9, 1e-4, 0.99, 1e-3};
+  integrate_nodes(s, update);
+  const double vx = (0.9 * 3e-3 + (1e-3 + 1e-4) * 0.3 / 0.7) * 0.99;
+  const double vy = (0.9 * -7e-3 + (1e-3 + 1e-4) * 1.1 / 0.7) * 0.99;
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const bool free_x = n.constraint[i] != kFixX, free_y = n.constraint[i] != kFixY;
+    wrong += !ydry_test::same_bits({n.vx[i], n.x[i]}, {n.vx[0], n.x[0]}) && free_x;
+    wrong += !ydry_test::same_bits({n.vy[i], n.y[i]}, {n.vy[0], n.y[0]}) && free_y;
+    wrong += !free_x && (n.vx[i] != 3e-3 || n.x[i] != 0.1);
+    wrong += !free_y && (n.vy[i] != -7e-3 || n.y[i] != 0.1);
+  }
+  CHECK(wrong == 0);
+  CHECK(n.vx[0] == Approx(vx).epsilon(1e-14));
+  CHECK(n.x[0] == Approx(0.1 + vx * 1e-3).epsilon(1e-14));
+  CHECK(n.vy[0] == Approx(vy).epsilon(1e-14));
+  CHECK(n.y[0] == Approx(0.1 + vy * 1e-3).epsilon(1e-14));
 }
 
 TEST_CASE("element and joint forces conserve linear and angular momentum, broken or not", "[mechanics]") {

@@ -7,46 +7,78 @@
 // The shrinkage case of paper 4.3 is exact in this law (the strain is linear in the stretch),
 // and P F^T = R T U R^T is symmetric because T is a polynomial in U, so the nodal forces
 // conserve angular as well as linear momentum.
+//
+// The kernel takes each thread's triangles (ycore/ownership.h) in runs of one material, so
+// that the material's constants are the same over a run and the loop over it vectorises:
+// every array is passed as its own restrict pointer (GCC does not vectorise the loop through
+// the State's vectors, whose data it cannot tell apart) and the three corners of triangle e are
+// nodes 3e, 3e+1, 3e+2.
+#include <algorithm>
 #include <cmath>
 
 #include "ycore/corotational.h"
 #include "ycore/mechanics.h"
+#include "ycore/vector_clones.h"
 
 namespace ydry {
+namespace {
+
+// Triangles [begin, end) of one mechanical material: the co-rotational stress of each into
+// sxx, syy, sxy, its internal forces and gravity into fx, fy of its corners.
+YDRY_AVX2_CLONE void material_run_forces(std::size_t begin, std::size_t end, const double* __restrict x,
+                                         const double* __restrict y, const double* __restrict inv0,
+                                         const double* __restrict area0, const double* __restrict mass,
+                                         const double* __restrict shrinkage, double* __restrict fx,
+                                         double* __restrict fy, double* __restrict sxx, double* __restrict syy,
+                                         double* __restrict sxy, double lambda, double mu, double bulk3,
+                                         double thickness, double gx, double gy) {
+  for (std::size_t e = begin; e < end; ++e) {
+    const double* inv = &inv0[4 * e];
+    const CorotationalState k = corotational_state(&x[3 * e], &y[3 * e], inv, lambda, mu, bulk3, shrinkage[e]);
+    const double c = k.c, sn = k.s, T00 = k.T00, T11 = k.T11, T01 = k.T01;
+    const double P00 = c * T00 - sn * T01, P01 = c * T01 - sn * T11;
+    const double P10 = sn * T00 + c * T01, P11 = sn * T01 + c * T11;
+    // Rotated stress R T R^T: the stress of the law in the current axes (Cauchy at small strain).
+    sxx[e] = P00 * c - P01 * sn;
+    syy[e] = P10 * sn + P11 * c;
+    sxy[e] = P00 * sn + P01 * c;
+    // Internal work A0 t P : dF; dF/dx of corners 1, 2 through the columns of inv0^T.
+    const double v = area0[e] * thickness;
+    const double G00 = v * (P00 * inv[0] + P01 * inv[1]), G01 = v * (P00 * inv[2] + P01 * inv[3]);
+    const double G10 = v * (P10 * inv[0] + P11 * inv[1]), G11 = v * (P10 * inv[2] + P11 * inv[3]);
+    const double wx = mass[e] / 3.0 * gx, wy = mass[e] / 3.0 * gy;  // a third of the weight
+    fx[3 * e] = (G00 + G01) + wx, fy[3 * e] = (G10 + G11) + wy;
+    fx[3 * e + 1] = -G00 + wx, fy[3 * e + 1] = -G10 + wy;
+    fx[3 * e + 2] = -G01 + wx, fy[3 * e + 2] = -G11 + wy;
+  }
+}
+
+}  // namespace
 
 void element_forces(State& s) {
   Nodes& n = s.nodes;
   Triangles& tri = s.triangles;
   const double thickness = s.mechanics.thickness_m;
   const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
-  for_each_owned(s.ownership.triangle_begin, tri.size(), [&](std::size_t e) {
-    const MaterialModel& m = s.materials[tri.material[e]];
-    const index_t i = corner_node(index_t(e), 0);
-    double f[6] = {0, 0, 0, 0, 0, 0};  // x, y of corners 0, 1, 2
-    if (m.mechanical) {
-      const CorotationalState k = corotational_state(n, tri, m, std::size_t(e));
-      const double c = k.c, sn = k.s, T00 = k.T00, T11 = k.T11, T01 = k.T01;
-      const double* inv = &tri.inv0[4 * e];
-      const double P00 = c * T00 - sn * T01, P01 = c * T01 - sn * T11;
-      const double P10 = sn * T00 + c * T01, P11 = sn * T01 + c * T11;
-      // Rotated stress R T R^T: the stress of the law in the current axes (Cauchy at small strain).
-      tri.sxx[e] = P00 * c - P01 * sn;
-      tri.syy[e] = P10 * sn + P11 * c;
-      tri.sxy[e] = P00 * sn + P01 * c;
-      // Internal work A0 t P : dF; dF/dx of corners 1, 2 through the columns of inv0^T.
-      const double v = tri.area0[e] * thickness;
-      const double G00 = v * (P00 * inv[0] + P01 * inv[1]), G01 = v * (P00 * inv[2] + P01 * inv[3]);
-      const double G10 = v * (P10 * inv[0] + P11 * inv[1]), G11 = v * (P10 * inv[2] + P11 * inv[3]);
-      f[2] = -G00, f[3] = -G10, f[4] = -G01, f[5] = -G11;
-      f[0] = G00 + G01, f[1] = G10 + G11;
-      const double weight = tri.mass_kg[e] / 3.0;
-      for (int a = 0; a < 3; ++a) f[2 * a] += weight * gx, f[2 * a + 1] += weight * gy;
+  const std::size_t nt = tri.size();
+#pragma omp parallel if (nt > parallel_minimum)
+  {
+    const IndexRange owned = owned_range(s.ownership.triangle_begin, nt);
+    for (std::size_t begin = owned.begin, end; begin < owned.end; begin = end) {
+      const std::uint16_t id = tri.material[begin];
+      for (end = begin + 1; end < owned.end && tri.material[end] == id;) ++end;
+      const MaterialModel& m = s.materials[id];
+      if (m.mechanical) {
+        material_run_forces(begin, end, n.x.data(), n.y.data(), tri.inv0.data(), tri.area0.data(),
+                            tri.mass_kg.data(), tri.shrinkage_strain.data(), n.fx.data(), n.fy.data(),
+                            tri.sxx.data(), tri.syy.data(), tri.sxy.data(), m.lambda, m.mu, m.bulk3, thickness,
+                            gx, gy);
+      } else {
+        std::fill(n.fx.begin() + 3 * begin, n.fx.begin() + 3 * end, 0.0);
+        std::fill(n.fy.begin() + 3 * begin, n.fy.begin() + 3 * end, 0.0);
+      }
     }
-    for (int a = 0; a < 3; ++a) {
-      n.fx[i + a] = f[2 * a];
-      n.fy[i + a] = f[2 * a + 1];
-    }
-  });
+  }
 }
 
 }  // namespace ydry

@@ -21,6 +21,7 @@
 
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
+#include "ycore/vector_clones.h"
 
 namespace ydry {
 namespace {
@@ -77,15 +78,6 @@ void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
     c.peak_opening[i] = strength.peak_opening;
   }
 }
-
-// On x86-64 Linux the pre-peak pass is built for AVX2 as well as the baseline, chosen at load
-// time (an ifunc): AVX2 without FMA rounds every operation as the scalar code does, so both
-// give the same bits. Elsewhere it is built once.
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__)
-#define YDRY_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
-#else
-#define YDRY_AVX2_CLONE
-#endif
 
 // The pre-peak law at every joint of the chunk; flags the joints past a peak.
 YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness) {

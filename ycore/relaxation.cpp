@@ -35,6 +35,7 @@
 #include "ycore/contact.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
+#include "ycore/node_integration.h"
 #include "ycore/numerical_failure.h"
 
 namespace ydry {
@@ -99,11 +100,6 @@ ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool 
   return gather_interaction_forces(s, fire_measures);
 }
 
-// One pseudo-step of length `step`: v = scale (keep v + (step + steer) f / m), x += v step.
-struct VelocityUpdate {
-  double keep = 1.0, steer = 0.0, scale = 1.0, step = 0.0;
-};
-
 // Central differences with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)); c = 0:
 // undamped.
 VelocityUpdate viscous_update(double damping, double dt) {
@@ -145,21 +141,6 @@ class FireSteering {
   double alpha_ = kAlphaStart;
   int positive_steps_ = 0;
 };
-
-void integrate_nodes(State& s, const VelocityUpdate& u) {
-  Nodes& n = s.nodes;
-  const double push = u.step + u.steer, dt = u.step;
-  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
-    if (!(n.constraint[i] & kFixX)) {
-      n.vx[i] = (u.keep * n.vx[i] + push * n.fx[i] / n.m[i]) * u.scale;
-      n.x[i] += n.vx[i] * dt;
-    }
-    if (!(n.constraint[i] & kFixY)) {
-      n.vy[i] = (u.keep * n.vy[i] + push * n.fy[i] / n.m[i]) * u.scale;
-      n.y[i] += n.vy[i] * dt;
-    }
-  });
-}
 
 // Moves the driven nodes by velocity x coupling_dt.
 void move_driven_nodes(State& s, double coupling_dt, double dt) {

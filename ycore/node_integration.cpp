@@ -1,0 +1,41 @@
+// The loop is written without branches (a prescribed component keeps its values by a select)
+// over restrict pointers, so that it vectorises (ycore/vector_clones.h); every free
+// component's operations are the scalar ones, in the same order.
+#include "ycore/node_integration.h"
+
+#include "ycore/ownership.h"
+#include "ycore/vector_clones.h"
+
+namespace ydry {
+namespace {
+
+YDRY_AVX2_CLONE void integrate_range(std::size_t begin, std::size_t end, const std::uint8_t* __restrict constraint,
+                                     const double* __restrict m, const double* __restrict fx,
+                                     const double* __restrict fy, double* __restrict vx, double* __restrict vy,
+                                     double* __restrict x, double* __restrict y, VelocityUpdate u) {
+  const double push = u.step + u.steer, dt = u.step;
+  for (std::size_t i = begin; i < end; ++i) {
+    const bool free_x = !(constraint[i] & kFixX), free_y = !(constraint[i] & kFixY);
+    const double vx_new = (u.keep * vx[i] + push * fx[i] / m[i]) * u.scale;
+    const double vy_new = (u.keep * vy[i] + push * fy[i] / m[i]) * u.scale;
+    x[i] = free_x ? x[i] + vx_new * dt : x[i];
+    y[i] = free_y ? y[i] + vy_new * dt : y[i];
+    vx[i] = free_x ? vx_new : vx[i];
+    vy[i] = free_y ? vy_new : vy[i];
+  }
+}
+
+}  // namespace
+
+void integrate_nodes(State& s, const VelocityUpdate& u) {
+  Nodes& n = s.nodes;
+  const std::size_t count = n.size();
+#pragma omp parallel if (count > parallel_minimum)
+  {
+    const IndexRange owned = owned_range(s.ownership.node_begin, count);
+    integrate_range(owned.begin, owned.end, n.constraint.data(), n.m.data(), n.fx.data(), n.fy.data(), n.vx.data(),
+                    n.vy.data(), n.x.data(), n.y.data(), u);
+  }
+}
+
+}  // namespace ydry
