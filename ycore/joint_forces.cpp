@@ -7,8 +7,9 @@
 // t on each node pair" misses at finite opening.
 //
 // Most joints, most of the time, are intact and before both peaks of the law at all three
-// points. The kernel takes each thread's joints (ycore/ownership.h) in chunks of kJointChunk
-// in three passes: the chunk's node coordinates and joint constants are copied into
+// points. The kernel takes each thread's joints (ycore/ownership.h) of a material with
+// mechanics (Joints::mechanical; a rigid material's joints carry nothing, ever) in chunks of
+// kJointChunk in three passes: the chunk's node coordinates and joint constants are copied into
 // arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
 // then each joint that is damaged, of a material that cannot break, past a peak or without
 // shear strength at some point is done again with the full law (joint_nodal_forces), broken
@@ -52,22 +53,23 @@ struct JointChunk {
   double h0[kJointChunk], tan_friction[kJointChunk];
   // JointStrength:
   double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
-  bool carries_nothing[kJointChunk];  // broken, or of a material without mechanics
+  bool carries_nothing[kJointChunk];  // broken
   bool full_law[kJointChunk];         // that, damaged or not breakable: joint_nodal_forces
   double past_peak[kJointChunk];      // > 0: a point past a peak, joint_nodal_forces too
   double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
 };
 
-void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
+// The chunk's joints are joint[0..count).
+void gather_chunk(const State& s, const index_t* joint, int count, JointChunk& c) {
   const Nodes& n = s.nodes;
   const Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
-    const std::size_t j = first + std::size_t(i);
+    const std::size_t j = joint[i];
     const index_t* node = &jt.node[4 * j];
     for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
     const MaterialModel& m = s.materials[jt.material[j]];
     const double* damage = &jt.damage[3 * j];
-    c.carries_nothing[i] = jt.broken[j] || !m.mechanical;
+    c.carries_nothing[i] = jt.broken[j];
     c.full_law[i] = c.carries_nothing[i] || !m.breakable || damage[0] > 0.0 || damage[1] > 0.0 || damage[2] > 0.0;
     // A joint left to the full law still goes through the vector pass: give it a harmless law.
     const JointStrength strength = c.full_law[i] ? JointStrength{1.0, 1.0, 1.0, 2.0}
@@ -106,11 +108,11 @@ YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness)
 // Work over the step by the trapezoid of the forces before and after it (exact for a linear
 // spring, so a vibrating joint books no spurious work), then the new forces; the full law
 // where the chunk says so. Broken joints carry nothing and take no work.
-void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, double dt) {
+void store_chunk(State& s, const index_t* joint, int count, const JointChunk& c, double dt) {
   const Nodes& n = s.nodes;
   Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
-    const std::size_t j = first + std::size_t(i);
+    const std::size_t j = joint[i];
     double* f = &jt.force[8 * j];
     if (c.carries_nothing[i]) {
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
@@ -158,15 +160,21 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
 void joint_forces(State& s, double dt) {
   const double thickness = s.mechanics.thickness_m;
   const std::size_t nj = s.joints.size();
+  const std::vector<index_t>& mechanical = s.joints.mechanical;
 #pragma omp parallel if (nj > parallel_minimum)
   {
+    // The thread's joints of a material with mechanics.
     const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
+    const std::size_t begin = std::size_t(std::lower_bound(mechanical.begin(), mechanical.end(), owned.begin) -
+                                          mechanical.begin());
+    const std::size_t end = std::size_t(std::lower_bound(mechanical.begin(), mechanical.end(), owned.end) -
+                                        mechanical.begin());
     JointChunk chunk;
-    for (std::size_t first = owned.begin; first < owned.end; first += kJointChunk) {
-      const int count = int(std::min<std::size_t>(kJointChunk, owned.end - first));
-      gather_chunk(s, first, count, chunk);
+    for (std::size_t first = begin; first < end; first += kJointChunk) {
+      const int count = int(std::min<std::size_t>(kJointChunk, end - first));
+      gather_chunk(s, &mechanical[first], count, chunk);
       pre_peak_forces(chunk, count, thickness);
-      store_chunk(s, first, count, chunk, dt);
+      store_chunk(s, &mechanical[first], count, chunk, dt);
     }
   }
 }

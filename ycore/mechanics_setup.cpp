@@ -103,6 +103,9 @@ void set_joint_data(State& s, const Deck& deck) {
       slot[slot[0] == kNoIndex ? 0 : 1] = index_t(4 * k + c);
     }
   }
+  j.mechanical.clear();
+  for (std::size_t k = 0; k < nj; ++k)
+    if (s.materials[j.material[k]].mechanical) j.mechanical.push_back(index_t(k));
   set_strength_factors(j, n, s.materials, std::uint64_t(deck.seed));
   // The pre-peak work (2/3) f_t o_p with o_p = 2 h f_t / p must leave room for softening, in
   // the joint where h f_t^2 is largest (f_t times the joint's strength factor).

@@ -71,6 +71,10 @@ struct Joints {                   // one per interior edge inside a material
                                         // the middle (never decreases: joints do not heal)
   std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
   std::vector<double> work;             // [joints] work done on the joint since t = 0, J
+  // The joints of a material with mechanics, ascending: the only ones the joint kernel visits.
+  // A rigid material's joints (the Peron deck's base: a third of its joints) carry nothing,
+  // ever: their forces stay 0 and no work is done on them.
+  std::vector<index_t> mechanical;
   std::size_t size() const { return broken.size(); }
 };
 
