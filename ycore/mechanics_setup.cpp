@@ -93,19 +93,19 @@ void set_joint_data(State& s, const Deck& deck) {
   j.force.assign(8 * nj, 0.0);
   j.work.assign(nj, 0.0);
   s.nodes.joint_slot.assign(2 * n.size(), kNoIndex);
+  j.mechanical.clear();
   for (std::size_t k = 0; k < nj; ++k) {
     const index_t a = j.node[4 * k], b = j.node[4 * k + 1];
     j.material[k] = s.triangles.material[triangle_of(a)];
     j.length0[k] = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
+    if (!s.materials[j.material[k]].mechanical) continue;  // carries nothing, ever
+    j.mechanical.push_back(index_t(k));
     for (int c = 0; c < 4; ++c) {
       const index_t node = j.node[4 * k + c];
       index_t* slot = &s.nodes.joint_slot[2 * node];
       slot[slot[0] == kNoIndex ? 0 : 1] = index_t(4 * k + c);
     }
   }
-  j.mechanical.clear();
-  for (std::size_t k = 0; k < nj; ++k)
-    if (s.materials[j.material[k]].mechanical) j.mechanical.push_back(index_t(k));
   set_strength_factors(j, n, s.materials, std::uint64_t(deck.seed));
   // The pre-peak work (2/3) f_t o_p with o_p = 2 h f_t / p must leave room for softening, in
   // the joint where h f_t^2 is largest (f_t times the joint's strength factor).

@@ -36,9 +36,9 @@ struct Nodes {                    // [3 * triangles] each
   std::vector<double> fx, fy;     // net force, N (elements, joints, gravity)
   std::vector<double> m;          // inertial mass of the pseudo-time relaxation, kg
   std::vector<std::uint8_t> constraint;  // kFixX | kFixY: component prescribed (fixed or driven)
-  // [2 * nodes]: 4 j + k for each joint j whose node k this is (a corner lies on two edges
-  // of its triangle, so at most two); kNoIndex where there is none. Joint forces are
-  // gathered through it, so no node is written by two threads.
+  // [2 * nodes]: 4 j + k for each joint j of a material with mechanics whose node k this is
+  // (a corner lies on two edges of its triangle, so at most two); kNoIndex where there is
+  // none. Joint forces are gathered through it, so no node is written by two threads.
   std::vector<index_t> joint_slot;
   // The lowest corner tied to this one through intact joints (ycrack, after every breakage):
   // corners of one tie group are one material point, and never in contact with each other.
