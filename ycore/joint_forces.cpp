@@ -8,7 +8,7 @@
 //
 // Most joints, most of the time, are intact and before both peaks of the law at all three
 // points. The kernel takes each thread's joints (ycore/ownership.h) of a material with
-// mechanics (Joints::mechanical; a rigid material's joints carry nothing, ever) in chunks of
+// mechanics (Joints::mechanical_runs; a rigid material's joints carry nothing, ever) in chunks of
 // kJointChunk in three passes: the chunk's node coordinates and joint constants are copied into
 // arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
 // then each joint that is damaged, of a material that cannot break, past a peak or without
@@ -59,12 +59,11 @@ struct JointChunk {
   double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
 };
 
-// The chunk's joints are joint[0..count).
-void gather_chunk(const State& s, const index_t* joint, int count, JointChunk& c) {
+void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
   const Nodes& n = s.nodes;
   const Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
-    const std::size_t j = joint[i];
+    const std::size_t j = first + std::size_t(i);
     const index_t* node = &jt.node[4 * j];
     for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
     const MaterialModel& m = s.materials[jt.material[j]];
@@ -108,11 +107,11 @@ YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness)
 // Work over the step by the trapezoid of the forces before and after it (exact for a linear
 // spring, so a vibrating joint books no spurious work), then the new forces; the full law
 // where the chunk says so. Broken joints carry nothing and take no work.
-void store_chunk(State& s, const index_t* joint, int count, const JointChunk& c, double dt) {
+void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, double dt) {
   const Nodes& n = s.nodes;
   Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
-    const std::size_t j = joint[i];
+    const std::size_t j = first + std::size_t(i);
     double* f = &jt.force[8 * j];
     if (c.carries_nothing[i]) {
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
@@ -160,21 +159,21 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
 void joint_forces(State& s, double dt) {
   const double thickness = s.mechanics.thickness_m;
   const std::size_t nj = s.joints.size();
-  const std::vector<index_t>& mechanical = s.joints.mechanical;
+  const std::vector<index_t>& runs = s.joints.mechanical_runs;
 #pragma omp parallel if (nj > parallel_minimum)
   {
-    // The thread's joints of a material with mechanics.
+    // The thread's joints of a material with mechanics: its range cut by every run.
     const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
-    const std::size_t begin = std::size_t(std::lower_bound(mechanical.begin(), mechanical.end(), owned.begin) -
-                                          mechanical.begin());
-    const std::size_t end = std::size_t(std::lower_bound(mechanical.begin(), mechanical.end(), owned.end) -
-                                        mechanical.begin());
     JointChunk chunk;
-    for (std::size_t first = begin; first < end; first += kJointChunk) {
-      const int count = int(std::min<std::size_t>(kJointChunk, end - first));
-      gather_chunk(s, &mechanical[first], count, chunk);
-      pre_peak_forces(chunk, count, thickness);
-      store_chunk(s, &mechanical[first], count, chunk, dt);
+    for (std::size_t r = 0; r < runs.size(); r += 2) {
+      const std::size_t begin = std::max<std::size_t>(runs[r], owned.begin);
+      const std::size_t end = std::min<std::size_t>(runs[r + 1], owned.end);
+      for (std::size_t first = begin; first < end; first += kJointChunk) {
+        const int count = int(std::min<std::size_t>(kJointChunk, end - first));
+        gather_chunk(s, first, count, chunk);
+        pre_peak_forces(chunk, count, thickness);
+        store_chunk(s, first, count, chunk, dt);
+      }
     }
   }
 }

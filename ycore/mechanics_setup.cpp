@@ -93,13 +93,16 @@ void set_joint_data(State& s, const Deck& deck) {
   j.force.assign(8 * nj, 0.0);
   j.work.assign(nj, 0.0);
   s.nodes.joint_slot.assign(2 * n.size(), kNoIndex);
-  j.mechanical.clear();
+  j.mechanical_runs.clear();
   for (std::size_t k = 0; k < nj; ++k) {
     const index_t a = j.node[4 * k], b = j.node[4 * k + 1];
     j.material[k] = s.triangles.material[triangle_of(a)];
     j.length0[k] = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
     if (!s.materials[j.material[k]].mechanical) continue;  // carries nothing, ever
-    j.mechanical.push_back(index_t(k));
+    if (j.mechanical_runs.empty() || j.mechanical_runs.back() != k)
+      j.mechanical_runs.insert(j.mechanical_runs.end(), {index_t(k), index_t(k + 1)});
+    else
+      ++j.mechanical_runs.back();
     for (int c = 0; c < 4; ++c) {
       const index_t node = j.node[4 * k + c];
       index_t* slot = &s.nodes.joint_slot[2 * node];
