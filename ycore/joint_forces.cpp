@@ -59,11 +59,21 @@ struct JointChunk {
   double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
 };
 
+// Joints are numbered with their first triangle, so a joint's second triangle lies ahead in
+// the node arrays: on a mesh larger than the cache its nodes' lines are first touched here and
+// in store_chunk, and the loads waited on memory (bench/RESULTS.md, session 18). They are
+// asked for this many joints ahead.
+constexpr std::size_t kPrefetchJoints = 24;
+
 void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
   const Nodes& n = s.nodes;
   const Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
+    if (j + kPrefetchJoints < jt.size()) {
+      const index_t ahead = jt.node[4 * (j + kPrefetchJoints) + 2];
+      for (const double* a : {&n.x[ahead], &n.y[ahead], &n.vx[ahead], &n.vy[ahead]}) __builtin_prefetch(a);
+    }
     const index_t* node = &jt.node[4 * j];
     for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
     const MaterialModel& m = s.materials[jt.material[j]];
