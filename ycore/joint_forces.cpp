@@ -172,10 +172,11 @@ void joint_forces(State& s, double dt) {
   const std::vector<index_t>& runs = s.joints.mechanical_runs;
 #pragma omp parallel if (nj > parallel_minimum)
   {
-    // The thread's joints of a material with mechanics: its range cut by every run.
+    // The thread's joints of a material with mechanics: its range cut by the runs (a few
+    // hundred on the Peron mesh, one where no material is rigid) that begin before its end.
     const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
     JointChunk chunk;
-    for (std::size_t r = 0; r < runs.size(); r += 2) {
+    for (std::size_t r = 0; r < runs.size() && runs[r] < owned.end; r += 2) {
       const std::size_t begin = std::max<std::size_t>(runs[r], owned.begin);
       const std::size_t end = std::min<std::size_t>(runs[r + 1], owned.end);
       for (std::size_t first = begin; first < end; first += kJointChunk) {
