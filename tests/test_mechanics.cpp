@@ -427,6 +427,41 @@ TEST_CASE("a rigid material stays put and never sets the time step", "[mechanics
   CHECK(state("7e10").mechanics.step_s == s.mechanics.step_s);  // a stiff base changes nothing
 }
 
+TEST_CASE("the joint kernel computes every joint of a material with mechanics, run by run, and leaves a rigid one's at zero",
+          "[mechanics][threads]") {
+  // The kernel visits the joints of a material with mechanics as runs of consecutive joints
+  // (Joints::mechanical_runs), each thread its range cut by them: a joint dropped or done
+  // twice at a run's or a range's end would show here, on 1 and 2 threads.
+  // The Peron deck, set up but not relaxed: its rigid base's triangles lie between the soil's
+  // along the Hilbert numbering, so its soil joints come in some 300 runs.
+  const State start = prepare_state(load_deck(YDRY_SOURCE_DIR "/inputs/peron/peron.toml", {}));
+  const std::vector<index_t>& runs = start.joints.mechanical_runs;
+  REQUIRE(runs.size() >= 2 * 100);
+  std::size_t rigid = 0;
+  for (std::size_t j = 0; j < start.joints.size(); ++j) rigid += !start.materials[start.joints.material[j]].mechanical;
+  REQUIRE(rigid > 0);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  ydry_test::on_1_and_2_threads([&](int threads) {
+    INFO(threads << " thread(s)");
+    State s = start;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+      s.nodes.x[i] += 1e-6 * unit(rng);
+      s.nodes.y[i] += 1e-6 * unit(rng);
+    }
+    joint_forces(s, 0.0);
+    std::size_t wrong = 0, carrying = 0;
+    for (std::size_t j = 0; j < s.joints.size(); ++j) {
+      double expected[8];
+      joint_nodal_forces(s, j, expected);  // 0 for a rigid material's joint
+      carrying += expected[0] != 0.0;
+      for (int k = 0; k < 8; ++k) wrong += !ydry_test::same_bits({expected[k]}, {s.joints.force[8 * j + k]});
+    }
+    CHECK(carrying == s.joints.size() - rigid);
+    CHECK(wrong == 0);
+  });
+}
+
 TEST_CASE("a bar pulled apart over many relaxations dissipates gf_I per unit crack area, and the supports' work balances it", "[mechanics]") {
   // verification/fracture_modeI: a 4 mm line of joints (1 m thick) opened 1e-6 m per coupling
   // step past complete separation; each relaxation starts from the extrapolated equilibrium,
