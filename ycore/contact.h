@@ -4,7 +4,9 @@
 // materials) and both faces of every broken joint. Each surface corner is tested against
 // each surface edge near it (node to edge, and so both ways round: two faces pressed together
 // push on each other symmetrically), except the edges of its own triangle and edges with an
-// end in its own tie group, so corners still held by intact joints never touch. A corner
+// end in its own tie group, so corners still held by intact joints never touch; a corner that
+// cannot move, on a straight side of its body (the rigid base's flat top), is only a receiver
+// (contact_setup.cpp, fixed_flat_corners). A corner
 // pressed a depth g into an edge is pushed out along the edge's normal by p_n t g / 2 per
 // surface edge of its own, and the reaction goes to the edge's ends by the linear weights of
 // its projection, so every contact conserves linear momentum. Friction is an elastic slip,
