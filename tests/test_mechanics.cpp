@@ -197,6 +197,38 @@ TEST_CASE("the joint kernel's pre-peak pass gives the full traction law's forces
   });
 }
 
+// Joints::softening holds z(D) of each point's committed damage, made at the commit, so that
+// the kernel skips the exp; it must give the forces of z computed afresh, and an entry made
+// for another damage (a stale one: the damage set since, as a restart or this test sets it)
+// must not be used.
+TEST_CASE("a damaged joint's forces are the same with the softening kept from the commit as with it computed afresh",
+          "[mechanics]") {
+  ydry_test::TempDir dir;
+  State s = setup_state(ydry_test::block_deck(dir, "left", {"mesh.size=[0.01, 0.01]"}));
+  Joints& jt = s.joints;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> damage(0.05, 0.95), move(-2e-8, 2e-8);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) s.nodes.x[i] = s.nodes.x0[i] + move(rng), s.nodes.y[i] = s.nodes.y0[i] + move(rng);
+  for (double& d : jt.damage) d = damage(rng);
+  REQUIRE(jt.softened_damage.size() == jt.damage.size());
+  const auto forces = [&] {
+    std::fill(jt.force.begin(), jt.force.end(), 0.0);
+    joint_forces(s, 0.0);
+    return jt.force;
+  };
+  std::fill(jt.softened_damage.begin(), jt.softened_damage.end(), 0.0);  // all stale: computed
+  const std::vector<double> afresh = forces();
+  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softening[q] = softening_curve(jt.damage[q]), jt.softened_damage[q] = jt.damage[q];
+  CHECK(ydry_test::same_bits(forces(), afresh));
+  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softening[q] = 0.5, jt.softened_damage[q] = jt.damage[q] + 0.01;
+  CHECK(ydry_test::same_bits(forces(), afresh));  // stale entries ignored
+  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softened_damage[q] = jt.damage[q];
+  CHECK_FALSE(ydry_test::same_bits(forces(), afresh));  // current ones are read (0.5 is not z)
+  std::size_t nonzero = 0;
+  for (const double f : afresh) nonzero += f != 0.0;
+  CHECK(nonzero > afresh.size() / 2);  // the joints were loaded
+}
+
 TEST_CASE("the element kernel's vectorised loop gives the forces and stresses of its scalar remainder, bit for bit",
           "[mechanics][threads]") {
   // The kernel takes the triangles in runs of one material, and vectorises each run four (or

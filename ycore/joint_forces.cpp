@@ -160,7 +160,10 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
   for (int p = 0; p < 3; ++p) {
     double o, sl;
     point_opening_slip(f, p, o, sl);
-    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
+    const std::size_t q = 3 * j + p;
+    const double committed_softening =
+        q < jt.softened_damage.size() && jt.softened_damage[q] == jt.damage[q] ? jt.softening[q] : kSofteningUnknown;
+    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[q], committed_softening);
     sum.add(f, p, kJointPointWeight[p] * h0 * s.mechanics.thickness_m, t.normal, t.shear, o, sl);
   }
   sum.forces(f, out);

@@ -59,8 +59,11 @@ inline JointStrength joint_strength(const MaterialModel& m, double strength_fact
 // that pre-peak plus softening work is exactly gf_I (gf_II) per unit area. Mode II strength
 // c + sigma_n tan(phi) under compression (Fig. 2b). Compression is a linear penalty p o / h0.
 // In a material that is not breakable the joint is the linear penalty in both directions.
+// committed_softening: z(committed_damage) where the caller has it (Joints::softening), or
+// kSofteningUnknown.
+constexpr double kSofteningUnknown = -1.0;
 inline PointTraction cohesive_traction(const MaterialModel& m, const JointStrength& j, double o, double s,
-                                       double committed_damage) {
+                                       double committed_damage, double committed_softening = kSofteningUnknown) {
   const double k = j.k;
   if (!m.breakable) return {k * o, k * s, 0.0};
 
@@ -77,8 +80,10 @@ inline PointTraction cohesive_traction(const MaterialModel& m, const JointStreng
     if (abs_s > sp) ds = (abs_s - sp) / joint_law_detail::softening_length(m.gf_II, fs, sp);
   }
   if (dn > 0.0 || ds > 0.0) t.damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c: failure at D = 1
-  const double damage = std::max(t.damage, committed_damage);
-  const double z = damage > 0.0 ? softening_curve(damage) : 1.0;
+  // z(max(D, committed)); softening_curve(0) = 1 without exp.
+  const double z = t.damage > committed_damage ? softening_curve(t.damage)
+                   : committed_softening >= 0.0 ? committed_softening
+                                                : softening_curve(committed_damage);
   t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / op) * z * ft;
   if (fs > 0.0) t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * z * fs, s);
   return t;
