@@ -7,16 +7,18 @@
 // t on each node pair" misses at finite opening.
 //
 // Most joints, most of the time, are intact and before both peaks of the law at all three
-// points. The kernel takes each thread's joints (ycore/ownership.h) of a material with
-// mechanics (Joints::mechanical_runs; a rigid material's joints carry nothing, ever) in chunks of
-// kJointChunk in three passes: the chunk's node coordinates and joint constants are copied into
-// arrays; the pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers;
-// then each joint that is damaged, of a material that cannot break, past a peak or without
-// shear strength at some point is done again with the full law (joint_nodal_forces), broken
-// joints are zeroed, and every joint's work and forces are stored. Both laws do the same
-// operations in the same order before the peaks, and this file is compiled without FMA
-// contraction (CMakeLists.txt), so the result is the full law's, bit for bit
-// (tests/test_mechanics.cpp).
+// points; most damaged joints, most of the time, do not soften further between two equilibria.
+// The kernel takes each thread's joints (ycore/ownership.h) of a material with mechanics
+// (Joints::mechanical_runs; a rigid material's joints carry nothing, ever) in chunks of
+// kJointChunk: the chunk's node coordinates and joint constants are copied into arrays; the
+// pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers; the joints
+// that are damaged or past a peak at some point are copied into a second set of arrays, over
+// which the law at the committed damage (softened_traction) runs in vector registers; each
+// joint that neither could take (its damage grows, its material cannot break, no z(D) is at
+// hand) is done again with the full law (joint_nodal_forces), broken joints are zeroed, and
+// every joint's work and forces are stored. The vector laws do the same operations in the same
+// order as the full law where they apply, and this file is compiled without FMA contraction
+// (CMakeLists.txt), so the result is the full law's, bit for bit (tests/test_mechanics.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -47,6 +49,12 @@ struct JointForceSum {
   }
 };
 
+// z(D) of joint point q's committed damage (Joints::softening), while the entry was made for
+// that damage; kSofteningUnknown otherwise.
+double committed_softening(const Joints& jt, std::size_t q) {
+  return q < jt.softened_damage.size() && jt.softened_damage[q] == jt.damage[q] ? jt.softening[q] : kSofteningUnknown;
+}
+
 // One chunk of joints as arrays over the chunk, so that the pre-peak pass vectorises.
 struct JointChunk {
   double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
@@ -54,10 +62,44 @@ struct JointChunk {
   // JointStrength:
   double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
   bool carries_nothing[kJointChunk];  // broken
-  bool full_law[kJointChunk];         // that, damaged or not breakable: joint_nodal_forces
-  double past_peak[kJointChunk];      // > 0: a point past a peak, joint_nodal_forces too
+  bool full_law[kJointChunk];         // that, damaged or not breakable: not the pre-peak law's
+  double past_peak[kJointChunk];      // > 0: a point past a peak, not the pre-peak law's either
+  bool scalar_law[kJointChunk];       // neither vector law's: joint_nodal_forces
   double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
 };
+
+// The chunk's joints that the pre-peak law cannot take, intact and of a breakable material,
+// as arrays over them, so that the law at the committed damage vectorises.
+struct SoftenedChunk {
+  int count = 0;
+  int lane[kJointChunk];                        // its index in the JointChunk
+  double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
+  double h0[kJointChunk];
+  double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
+  double tan_friction[kJointChunk], gf_I[kJointChunk], gf_II[kJointChunk];
+  double damage[3][kJointChunk];     // committed, at the joint's three points
+  double softening[3][kJointChunk];  // z of it (Joints::softening), or kSofteningUnknown
+  double needs_full_law[kJointChunk];
+  double fresh[8][kJointChunk];
+};
+
+// A joint's forces from the coordinates of its nodes, with traction(p, o, s) the law at point p
+// (its normal and shear traction and a flag); returns the sum of the three points' flags.
+template <class Traction>
+inline double joint_forces_with(const JointFrame& f, double h0, double thickness, Traction traction, double out[8]) {
+  JointForceSum sum;
+  double flags = 0.0;
+#pragma GCC unroll 3
+  for (int p = 0; p < 3; ++p) {
+    double o, sl;
+    point_opening_slip(f, p, o, sl);
+    double normal, shear;
+    flags += traction(p, o, sl, normal, shear);
+    sum.add(f, p, kJointPointWeight[p] * h0 * thickness, normal, shear, o, sl);
+  }
+  sum.forces(f, out);
+  return flags;
+}
 
 // Joints are numbered with their first triangle, so a joint's second triangle lies ahead in
 // the node arrays: on a mesh larger than the cache its nodes' lines are first touched here and
@@ -96,21 +138,78 @@ YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness)
     const JointFrame f = joint_frame(c.x[0][i], c.x[1][i], c.x[2][i], c.x[3][i], c.y[0][i], c.y[1][i],
                                      c.y[2][i], c.y[3][i]);
     const JointStrength strength{c.k[i], c.tensile[i], c.cohesion[i], c.peak_opening[i]};
-    JointForceSum sum;
-    double past_peak = 0.0;
-#pragma GCC unroll 3
-    for (int p = 0; p < 3; ++p) {
-      double o, sl;
-      point_opening_slip(f, p, o, sl);
-      const PrePeakTraction t = pre_peak_traction(strength, c.tan_friction[i], o, sl);
-      past_peak += t.past_peak;
-      sum.add(f, p, kJointPointWeight[p] * c.h0[i] * thickness, t.normal, t.shear, o, sl);
-    }
+    const double tan_friction = c.tan_friction[i];
     double out[8];
-    sum.forces(f, out);
+    c.past_peak[i] = joint_forces_with(f, c.h0[i], thickness, [&](int, double o, double sl, double& normal, double& shear) {
+      const PrePeakTraction t = pre_peak_traction(strength, tan_friction, o, sl);
+      normal = t.normal, shear = t.shear;
+      return t.past_peak;
+    }, out);
 #pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) c.fresh[k][i] = out[k];
-    c.past_peak[i] = past_peak;
+  }
+}
+
+// Copies the chunk's intact joints of a breakable material that the pre-peak law could not
+// take into d; marks every joint that neither vector law will take.
+void gather_softened(const State& s, std::size_t first, int count, JointChunk& c, SoftenedChunk& d) {
+  const Joints& jt = s.joints;
+  d.count = 0;
+  for (int i = 0; i < count; ++i) {
+    c.scalar_law[i] = false;
+    if (c.carries_nothing[i] || !(c.full_law[i] || c.past_peak[i] > 0.0)) continue;
+    const std::size_t j = first + std::size_t(i);
+    const MaterialModel& m = s.materials[jt.material[j]];
+    if (!m.breakable) {
+      c.scalar_law[i] = true;
+      continue;
+    }
+    const int l = d.count++;
+    d.lane[l] = i;
+    for (int k = 0; k < 4; ++k) d.x[k][l] = c.x[k][i], d.y[k][l] = c.y[k][i];
+    const JointStrength strength = joint_strength(m, jt.strength_factor[j], jt.length0[j]);
+    d.h0[l] = jt.length0[j];
+    d.k[l] = strength.k, d.tensile[l] = strength.tensile, d.cohesion[l] = strength.cohesion;
+    d.peak_opening[l] = strength.peak_opening;
+    d.tan_friction[l] = m.tan_friction, d.gf_I[l] = m.gf_I, d.gf_II[l] = m.gf_II;
+    for (int p = 0; p < 3; ++p) {
+      const std::size_t q = 3 * j + p;
+      d.damage[p][l] = jt.damage[q];
+      d.softening[p][l] = committed_softening(jt, q);
+    }
+  }
+}
+
+// The law at the committed damage at every joint of d; flags the joints whose damage grows.
+YDRY_AVX2_CLONE void softened_forces(SoftenedChunk& d, double thickness, double curve_area) {
+  const int count = d.count;
+  for (int l = 0; l < count; ++l) {
+    const JointFrame f = joint_frame(d.x[0][l], d.x[1][l], d.x[2][l], d.x[3][l], d.y[0][l], d.y[1][l],
+                                     d.y[2][l], d.y[3][l]);
+    const JointStrength strength{d.k[l], d.tensile[l], d.cohesion[l], d.peak_opening[l]};
+    const SofteningConstants constants{d.tan_friction[l], d.gf_I[l], d.gf_II[l], curve_area};
+    const double damage[3] = {d.damage[0][l], d.damage[1][l], d.damage[2][l]};
+    const double softening[3] = {d.softening[0][l], d.softening[1][l], d.softening[2][l]};
+    double out[8];
+    d.needs_full_law[l] = joint_forces_with(f, d.h0[l], thickness, [&](int p, double o, double sl, double& normal, double& shear) {
+      const SoftenedTraction t = softened_traction(strength, constants, o, sl, damage[p], softening[p]);
+      normal = t.normal, shear = t.shear;
+      return t.needs_full_law;
+    }, out);
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) d.fresh[k][l] = out[k];
+  }
+}
+
+// The softened pass's forces into the chunk, or its flag for the full law.
+void scatter_softened(const SoftenedChunk& d, JointChunk& c) {
+  for (int l = 0; l < d.count; ++l) {
+    const int i = d.lane[l];
+    if (d.needs_full_law[l] > 0.0) {
+      c.scalar_law[i] = true;
+      continue;
+    }
+    for (int k = 0; k < 8; ++k) c.fresh[k][i] = d.fresh[k][l];
   }
 }
 
@@ -128,7 +227,7 @@ void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, do
       continue;
     }
     double fresh[8];
-    if (c.full_law[i] || c.past_peak[i] > 0.0)
+    if (c.scalar_law[i])
       joint_nodal_forces(s, j, fresh);
     else
       for (int k = 0; k < 8; ++k) fresh[k] = c.fresh[k][i];
@@ -156,21 +255,16 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
                                    n.y[node[1]], n.y[node[2]], n.y[node[3]]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
-  JointForceSum sum;
-  for (int p = 0; p < 3; ++p) {
-    double o, sl;
-    point_opening_slip(f, p, o, sl);
+  joint_forces_with(f, h0, s.mechanics.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
     const std::size_t q = 3 * j + p;
-    const double committed_softening =
-        q < jt.softened_damage.size() && jt.softened_damage[q] == jt.damage[q] ? jt.softening[q] : kSofteningUnknown;
-    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[q], committed_softening);
-    sum.add(f, p, kJointPointWeight[p] * h0 * s.mechanics.thickness_m, t.normal, t.shear, o, sl);
-  }
-  sum.forces(f, out);
+    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[q], committed_softening(jt, q));
+    normal = t.normal, shear = t.shear;
+    return 0.0;
+  }, out);
 }
 
 void joint_forces(State& s, double dt) {
-  const double thickness = s.mechanics.thickness_m;
+  const double thickness = s.mechanics.thickness_m, curve_area = softening_curve_area();
   const std::size_t nj = s.joints.size();
   const std::vector<index_t>& runs = s.joints.mechanical_runs;
 #pragma omp parallel if (nj > parallel_minimum)
@@ -179,6 +273,7 @@ void joint_forces(State& s, double dt) {
     // hundred on the Peron mesh, one where no material is rigid) that begin before its end.
     const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
     JointChunk chunk;
+    SoftenedChunk softened;
     for (std::size_t r = 0; r < runs.size() && runs[r] < owned.end; r += 2) {
       const std::size_t begin = std::max<std::size_t>(runs[r], owned.begin);
       const std::size_t end = std::min<std::size_t>(runs[r + 1], owned.end);
@@ -186,6 +281,9 @@ void joint_forces(State& s, double dt) {
         const int count = int(std::min<std::size_t>(kJointChunk, end - first));
         gather_chunk(s, first, count, chunk);
         pre_peak_forces(chunk, count, thickness);
+        gather_softened(s, first, count, chunk, softened);
+        softened_forces(softened, thickness, curve_area);
+        scatter_softened(softened, chunk);
         store_chunk(s, first, count, chunk, dt);
       }
     }

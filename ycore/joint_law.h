@@ -30,8 +30,10 @@ inline double hardening(double r) { return r < 1.0 ? r * (2.0 - r) : 1.0; }
 // the fracture energy: (2/3) f delta_p before the peak plus area(z) f delta_t after it.
 // A fracture energy smaller than the pre-peak work (possible for the mode II strength under
 // high compression) keeps a minimal softening length instead.
-inline double softening_length(double fracture_energy, double strength, double peak) {
-  const double t = (fracture_energy - 2.0 / 3.0 * strength * peak) / (softening_curve_area() * strength);
+// (curve_area: softening_curve_area(), which a vectorised caller passes in.)
+inline double softening_length(double fracture_energy, double strength, double peak,
+                               double curve_area = softening_curve_area()) {
+  const double t = (fracture_energy - 2.0 / 3.0 * strength * peak) / (curve_area * strength);
   return std::max(t, 1e-3 * peak);
 }
 }  // namespace joint_law_detail
@@ -105,6 +107,43 @@ inline PrePeakTraction pre_peak_traction(const JointStrength& j, double tan_fric
   t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / j.peak_opening) * j.tensile;
   t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * fs, s);
   t.past_peak = o > j.peak_opening || !(fs > 0.0) || abs_s > sp ? 1.0 : 0.0;
+  return t;
+}
+
+// cohesive_traction at a point whose damage stays at or below its committed damage, bit for
+// bit, without branches, given z of the committed damage (Joints::softening): the force
+// kernel evaluates it in vector registers for the damaged joints and those past a peak, and
+// takes cohesive_traction instead wherever `needs_full_law` is set (the damage grows, so z
+// needs an exp; no z is at hand: committed_softening < 0; or the point has no shear
+// strength). The material must be
+// breakable; curve_area is softening_curve_area().
+struct SoftenedTraction {
+  double normal, shear;   // Pa, as in PointTraction
+  double needs_full_law;  // > 0 or 0 (a double, so that the kernel vectorises)
+};
+struct SofteningConstants {  // the material's, for softened_traction
+  double tan_friction, gf_I, gf_II, curve_area;
+};
+inline SoftenedTraction softened_traction(const JointStrength& j, const SofteningConstants& m, double o, double s,
+                                          double committed_damage, double committed_softening) {
+  using joint_law_detail::hardening;
+  using joint_law_detail::softening_length;
+  const double k = j.k, ft = j.tensile, op = j.peak_opening;
+  const double compression = o < 0.0 ? -k * o : 0.0;
+  const double fs = j.cohesion + compression * m.tan_friction;  // Fig. 2b
+  const double abs_s = std::fabs(s);
+  // Both branches of every choice are computed (a select, no jump; the dropped one may be
+  // inf). dn and ds are 0 or positive, so D = 0 where both are 0, as the full law has it. A
+  // point without shear strength (fs <= 0) is left to the full law.
+  const double dn = o > op ? (o - op) / softening_length(m.gf_I, ft, op, m.curve_area) : 0.0;
+  const double sp = 2.0 * fs / k;
+  const double ds = abs_s > sp ? (abs_s - sp) / softening_length(m.gf_II, fs, sp, m.curve_area) : 0.0;
+  const double damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c
+  const double z = committed_softening;
+  SoftenedTraction t;
+  t.needs_full_law = (damage > committed_damage ? 1.0 : 0.0) + (z >= 0.0 ? 0.0 : 1.0) + (fs > 0.0 ? 0.0 : 1.0);
+  t.normal = o < 0.0 ? -compression : hardening(o / op) * z * ft;
+  t.shear = std::copysign(hardening(abs_s / sp) * z * fs, s);
   return t;
 }
 
