@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "ycore/deck.h"
+#include "ycore/node_integration.h"
 #include "ycore/state.h"
 
 namespace ydry {
@@ -41,8 +42,13 @@ void scale_node_masses_to_common_step(State& state);
 Ownership partition_for_threads(const State& state, std::size_t slots);
 
 // Element internal forces and gravity: overwrites fx, fy of every node (each triangle owns
-// its three nodes) and the element stress.
-void element_forces(State& state);
+// its three nodes). With move_first, each triangle's nodes are first moved by that pseudo-step
+// (integrate_node_range), in the same pass.
+void element_forces(State& state, const VelocityUpdate* move_first = nullptr);
+
+// The element stress (Triangles::sxx, syy, sxy) at the current positions. The forces do not
+// need it: relaxations make it once, at the equilibrium reached.
+void element_stresses(State& state);
 
 // Joints per pass of the joint kernel's vectorised pre-peak law (joint_forces.cpp).
 constexpr int kJointChunk = 256;

@@ -3,7 +3,6 @@
 // component's operations are the scalar ones, in the same order.
 #include "ycore/node_integration.h"
 
-#include "ycore/ownership.h"
 #include "ycore/vector_clones.h"
 
 namespace ydry {
@@ -27,15 +26,10 @@ YDRY_AVX2_CLONE void integrate_range(std::size_t begin, std::size_t end, const s
 
 }  // namespace
 
-void integrate_nodes(State& s, const VelocityUpdate& u) {
+void integrate_node_range(State& s, std::size_t begin, std::size_t end, const VelocityUpdate& u) {
   Nodes& n = s.nodes;
-  const std::size_t count = n.size();
-#pragma omp parallel if (count > parallel_minimum)
-  {
-    const IndexRange owned = owned_range(s.ownership.node_begin, count);
-    integrate_range(owned.begin, owned.end, n.constraint.data(), n.m.data(), n.fx.data(), n.fy.data(), n.vx.data(),
-                    n.vy.data(), n.x.data(), n.y.data(), u);
-  }
+  integrate_range(begin, end, n.constraint.data(), n.m.data(), n.fx.data(), n.fy.data(), n.vx.data(), n.vy.data(),
+                  n.x.data(), n.y.data(), u);
 }
 
 }  // namespace ydry

@@ -11,8 +11,9 @@ struct VelocityUpdate {
   double keep = 1.0, steer = 0.0, scale = 1.0, step = 0.0;
 };
 
-// Moves every node component that is not prescribed (Nodes::constraint); the others keep
-// their velocity and position.
-void integrate_nodes(State& state, const VelocityUpdate& update);
+// Moves every component of nodes [begin, end) that is not prescribed (Nodes::constraint); the
+// others keep their velocity and position. A relaxation step moves each triangle's nodes just
+// before its element forces (element_forces, ycore/mechanics.h).
+void integrate_node_range(State& state, std::size_t begin, std::size_t end, const VelocityUpdate& update);
 
 }  // namespace ydry

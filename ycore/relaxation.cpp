@@ -35,7 +35,6 @@
 #include "ycore/contact.h"
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
-#include "ycore/node_integration.h"
 #include "ycore/numerical_failure.h"
 
 namespace ydry {
@@ -92,9 +91,11 @@ ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
   return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
 }
 
-// FIRE's measures (power, f.M^-1 f) only with fire_measures.
-ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false) {
-  element_forces(s);
+// FIRE's measures (power, f.M^-1 f) only with fire_measures. With move_first, the nodes are
+// first moved by that pseudo-step (in the element kernel's pass).
+ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
+                             const VelocityUpdate* move_first = nullptr) {
+  element_forces(s, move_first);
   joint_forces(s, dt);
   contact_forces(s, dt, friction);
   return gather_interaction_forces(s, fire_measures);
@@ -226,9 +227,10 @@ void stop_runaway(const State& s) {
 }
 
 // Books the reactions, the work of the supports and of gravity since start_motion, and the
-// step count.
+// step count; makes the element stresses of the state reached.
 void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
   stop_runaway(s);
+  element_stresses(s);
   const Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   update_reactions(s, coupling_dt);
@@ -274,8 +276,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   double damping = 0.0;
   while (!balanced(measures) && result.steps < controls.max_steps) {
     const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
-    integrate_nodes(s, update);
-    measures = compute_forces(s, update.step, friction, fire_measures);
+    measures = compute_forces(s, update.step, friction, fire_measures, &update);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
     if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
@@ -305,8 +306,8 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   const double dt = coupling_dt / double(substeps);
   for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
     move_driven_nodes(s, dt, dt);
-    integrate_nodes(s, viscous_update(0.0, dt));
-    measures = compute_forces(s, dt, FrictionUpdate::every_step);
+    const VelocityUpdate undamped = viscous_update(0.0, dt);
+    measures = compute_forces(s, dt, FrictionUpdate::every_step, false, &undamped);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
   }
