@@ -12,6 +12,12 @@ double softening_curve(double damage) {
          (a * r + b * r2 * r2 * r2);  // (1 - D)^c with c = 6
 }
 
+void update_committed_softening(Joints& jt, std::size_t q) {
+  if (q >= jt.softening.size() || jt.softened_damage[q] == jt.damage[q]) return;
+  jt.softening[q] = softening_curve(jt.damage[q]);
+  jt.softened_damage[q] = jt.damage[q];
+}
+
 double softening_curve_area() {
   static const double area = [] {
     constexpr int n = 20000;  // composite Simpson; z is smooth, so this is exact to 1e-12

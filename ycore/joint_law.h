@@ -15,6 +15,10 @@ double softening_curve(double damage);
 // Its area on [0, 1] (0.3863): the softening branch dissipates f * delta * this.
 double softening_curve_area();
 
+// Makes Joints::softening of joint point q (3 j + p) z of the point's committed damage, where
+// it was made for another (an exp); the commit and a restart call it.
+void update_committed_softening(Joints& joints, std::size_t q);
+
 struct PointTraction {
   double normal = 0, shear = 0;  // Pa, on the first triangle's face (tension positive)
   double damage = 0;             // D of the current opening and slip, before the history

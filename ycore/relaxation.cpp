@@ -328,10 +328,7 @@ std::size_t commit_joint_damage(State& s) {
       double& d = jt.damage[3 * j + p];
       const double o = a * k.opening[0] + b * k.opening[1], sl = a * k.slip[0] + b * k.slip[1];
       d = std::max(d, cohesive_traction(m, jt.strength_factor[j], jt.length0[j], o, sl, d).damage);
-      if (3 * j + p < jt.softening.size() && jt.softened_damage[3 * j + p] != d) {
-        jt.softening[3 * j + p] = softening_curve(d);
-        jt.softened_damage[3 * j + p] = d;
-      }
+      update_committed_softening(jt, 3 * j + p);
       failed += d >= 1.0;
     }
     if (failed >= 2) {
