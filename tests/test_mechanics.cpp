@@ -8,6 +8,7 @@
 #include <limits>
 #include <random>
 #include <tuple>
+#include <utility>
 
 #include "tests/test_support.h"
 #include "ycore/blocked_sum.h"
@@ -38,6 +39,18 @@ void net_forces(State& s) {
       s.nodes.fx[i] += s.joints.force[2 * std::size_t(slot)];
       s.nodes.fy[i] += s.joints.force[2 * std::size_t(slot) + 1];
     }
+}
+
+// Two soils for the traction law's tests: one with cohesion, and one without (no shear strength
+// outside compression).
+std::pair<MaterialModel, MaterialModel> soils_with_and_without_cohesion() {
+  MaterialModel soil;
+  soil.mechanical = true;
+  soil.penalty = 1.0e8, soil.tensile_strength = 1.0e4, soil.cohesion = 2.0e4, soil.tan_friction = 0.5;
+  soil.gf_I = 1.0, soil.gf_II = 3.0;
+  MaterialModel cohesionless = soil;
+  cohesionless.cohesion = 0.0;
+  return {soil, cohesionless};
 }
 
 }  // namespace
@@ -120,12 +133,7 @@ TEST_CASE("a joint's traction-opening curve integrates to gf_I, and traction-sli
 TEST_CASE("the pre-peak traction is the full law's, bit for bit, wherever it does not flag a peak", "[mechanics]") {
   // Points from deep compression to past the tensile and shear peaks, on a soil with cohesion
   // and on one without (no shear strength outside compression: always flagged).
-  MaterialModel soil;
-  soil.mechanical = true;
-  soil.penalty = 1.0e8, soil.tensile_strength = 1.0e4, soil.cohesion = 2.0e4, soil.tan_friction = 0.5;
-  soil.gf_I = 1.0, soil.gf_II = 3.0;
-  MaterialModel cohesionless = soil;
-  cohesionless.cohesion = 0.0;
+  const auto [soil, cohesionless] = soils_with_and_without_cohesion();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> factor(0.8, 1.2), opening(-3e-8, 3e-8), slip(-6e-8, 6e-8);
   std::size_t flagged = 0, unflagged = 0, differing = 0, missed = 0;
@@ -155,12 +163,7 @@ TEST_CASE("the law at the committed damage is the full law's, bit for bit, where
   // past both peaks: the damage grows at some (flagged: the exp is the full law's), and stays
   // at others, where the tractions must be the full law's. A point without shear strength (the
   // cohesionless soil in tension) and one without its z at hand are flagged too.
-  MaterialModel soil;
-  soil.mechanical = true;
-  soil.penalty = 1.0e8, soil.tensile_strength = 1.0e4, soil.cohesion = 2.0e4, soil.tan_friction = 0.5;
-  soil.gf_I = 1.0, soil.gf_II = 3.0;
-  MaterialModel cohesionless = soil;
-  cohesionless.cohesion = 0.0;
+  const auto [soil, cohesionless] = soils_with_and_without_cohesion();
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> factor(0.8, 1.2), opening(-3e-8, 3e-4), slip(-3e-4, 3e-4),
       committed(0.0, 1.0);
