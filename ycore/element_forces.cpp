@@ -14,9 +14,10 @@
 // the State's vectors, whose data it cannot tell apart) and the three corners of triangle e are
 // nodes 3e, 3e+1, 3e+2. A relaxation step moves the nodes in the same pass, a cache-sized
 // piece of a run at a time (kMovedTogether), so that the positions integration writes are read
-// at once instead of from memory: on a mesh larger than the cache the step waits on memory
-// (bench/RESULTS.md). The stress is not needed by the forces, only at equilibrium
-// (element_stresses), so the step does not store it.
+// while still in the cache, and one sweep of the node arrays and one parallel region a step are
+// saved (on a mesh larger than the cache the step waits on memory; the gain was within the
+// noise of this 2-core host: bench/RESULTS.md, session 20). The stress is not needed by the
+// forces, only at equilibrium (element_stresses), so the step does not store it.
 #include <algorithm>
 #include <cmath>
 

@@ -15,10 +15,11 @@
 // that are damaged or past a peak at some point are copied into a second set of arrays, over
 // which the law at the committed damage (softened_traction) runs in vector registers; each
 // joint that neither could take (its damage grows, so z(D) needs an exp; its material cannot
-// break; no z(D) is at hand; a point has no shear strength) is done again with the full law (joint_nodal_forces), broken joints are zeroed, and
-// every joint's work and forces are stored. The vector laws do the same operations in the same
-// order as the full law where they apply, and this file is compiled without FMA contraction
-// (CMakeLists.txt), so the result is the full law's, bit for bit (tests/test_mechanics.cpp).
+// break; no z(D) is at hand; a point has no shear strength) is done again with the full law
+// (joint_nodal_forces), broken joints are zeroed, and every joint's work and forces are stored.
+// The vector laws do the same operations in the same order as the full law where they apply,
+// and this file is compiled without FMA contraction (CMakeLists.txt), so the result is the full
+// law's, bit for bit (tests/test_mechanics.cpp).
 #include <algorithm>
 #include <cmath>
 
