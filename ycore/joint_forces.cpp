@@ -7,16 +7,15 @@
 // t on each node pair" misses at finite opening.
 //
 // Most joints, most of the time, are intact and before both peaks of the law at all three
-// points; most damaged joints, most of the time, do not soften further between two equilibria.
-// The kernel takes each thread's joints (ycore/ownership.h) of a material with mechanics
+// points. The kernel takes each thread's joints (ycore/ownership.h) of a material with mechanics
 // (Joints::mechanical_runs; a rigid material's joints carry nothing, ever) in chunks of
 // kJointChunk: the chunk's node coordinates and joint constants are copied into arrays; the
 // pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers; the joints
 // that are damaged or past a peak at some point are copied into a second set of arrays, over
-// which the law at the committed damage (softened_traction) runs in vector registers; each
-// joint that neither could take (its damage grows, so z(D) needs an exp; its material cannot
-// break; no z(D) is at hand; a point has no shear strength) is done again with the full law
-// (joint_nodal_forces), broken joints are zeroed, and every joint's work and forces are stored.
+// which the whole law (softened_traction, with ydry's own exp in z(D)) runs in vector
+// registers; each joint that neither could take (its material cannot break; a point has no
+// shear strength) is done again with the scalar law (joint_nodal_forces), broken joints are
+// zeroed, and every joint's work and forces are stored.
 // The vector laws do the same operations in the same order as the full law where they apply,
 // and this file is compiled without FMA contraction (CMakeLists.txt), so the result is the full
 // law's, bit for bit (tests/test_mechanics.cpp).
@@ -70,7 +69,7 @@ struct JointChunk {
 };
 
 // The chunk's joints that the pre-peak law cannot take, intact and of a breakable material,
-// as arrays over them, so that the law at the committed damage vectorises.
+// as arrays over them, so that the whole law vectorises.
 struct SoftenedChunk {
   int count = 0;
   int lane[kJointChunk];                        // its index in the JointChunk
@@ -181,7 +180,7 @@ void gather_softened(const State& s, std::size_t first, int count, JointChunk& c
   }
 }
 
-// The law at the committed damage at every joint of d; flags the joints whose damage grows.
+// The whole law at every joint of d; flags the joints with a point without shear strength.
 YDRY_AVX2_CLONE void softened_forces(SoftenedChunk& d, double thickness, double curve_area) {
   const int count = d.count;
   for (int l = 0; l < count; ++l) {

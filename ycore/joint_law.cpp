@@ -4,14 +4,6 @@
 
 namespace ydry {
 
-double softening_curve(double damage) {
-  constexpr double a = 0.63, b = 1.8, c = 6.0;
-  if (damage <= 0.0) return 1.0;  // the intact joint: the common case, without exp
-  const double d = std::min(damage, 1.0), r = 1.0 - d, r2 = r * r;
-  return (1.0 - (a + b - 1.0) / (a + b) * std::exp(d * (a + c * b) / ((a + b) * (1.0 - a - b)))) *
-         (a * r + b * r2 * r2 * r2);  // (1 - D)^c with c = 6
-}
-
 void update_committed_softening(Joints& jt, std::size_t q) {
   if (q >= jt.softening.size() || jt.softened_damage[q] == jt.damage[q]) return;
   jt.softening[q] = softening_curve(jt.damage[q]);

@@ -10,13 +10,41 @@
 
 namespace ydry {
 
-// Munjiza's softening curve z(D) (a = 0.63, b = 1.8, c = 6): z(0) = 1, z(1) = 0.
-double softening_curve(double damage);
+namespace joint_law_detail {
+// e^x for -3.3 <= x <= 0, the softening curve's exponents, within 2e-15 relative: the Taylor
+// series of e^(x/8) to degree 13 (remainder below 5e-17) by Horner's rule, squared three
+// times. Inline and without branches, so that the joint kernel's vector pass and the scalar
+// law do the same operations and get the same bits; libm's exp has no vector twin with its
+// bits.
+inline double softening_exp(double x) {
+  constexpr double inverse_factorial[14] = {1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+                                            1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800,
+                                            1.0 / 479001600, 1.0 / 6227020800};
+  const double y = 0.125 * x;
+  double e = inverse_factorial[13];
+#pragma GCC unroll 13
+  for (int k = 12; k >= 0; --k) e = e * y + inverse_factorial[k];
+  e *= e;
+  e *= e;
+  return e * e;
+}
+}  // namespace joint_law_detail
+
+// Munjiza's softening curve z(D) (a = 0.63, b = 1.8, c = 6): z(0) = 1, z(1) = 0; z = 1 for
+// D <= 0. Without branches (both sides of the select are computed).
+inline double softening_curve(double damage) {
+  constexpr double a = 0.63, b = 1.8, c = 6.0;
+  const double d = std::min(damage, 1.0), r = 1.0 - d, r2 = r * r;
+  const double z = (1.0 - (a + b - 1.0) / (a + b) *
+                              joint_law_detail::softening_exp(d * (a + c * b) / ((a + b) * (1.0 - a - b)))) *
+                   (a * r + b * r2 * r2 * r2);  // (1 - D)^c with c = 6
+  return damage <= 0.0 ? 1.0 : z;
+}
 // Its area on [0, 1] (0.3863): the softening branch dissipates f * delta * this.
 double softening_curve_area();
 
 // Makes Joints::softening of joint point q (3 j + p) z of the point's committed damage, where
-// it was made for another (an exp); the commit and a restart call it.
+// it was made for another; the commit and a restart call it.
 void update_committed_softening(Joints& joints, std::size_t q);
 
 struct PointTraction {
@@ -86,7 +114,7 @@ inline PointTraction cohesive_traction(const MaterialModel& m, const JointStreng
     if (abs_s > sp) ds = (abs_s - sp) / joint_law_detail::softening_length(m.gf_II, fs, sp);
   }
   if (dn > 0.0 || ds > 0.0) t.damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c: failure at D = 1
-  // z(max(D, committed)); softening_curve(0) = 1 without exp.
+  // z(max(D, committed))
   const double z = t.damage > committed_damage ? softening_curve(t.damage)
                    : committed_softening >= 0.0 ? committed_softening
                                                 : softening_curve(committed_damage);
@@ -114,13 +142,11 @@ inline PrePeakTraction pre_peak_traction(const JointStrength& j, double tan_fric
   return t;
 }
 
-// cohesive_traction at a point whose damage stays at or below its committed damage, bit for
-// bit, without branches, given z of the committed damage (Joints::softening): the force
-// kernel evaluates it in vector registers for the damaged joints and those past a peak, and
-// takes cohesive_traction instead wherever `needs_full_law` is set (the damage grows, so z
-// needs an exp; no z is at hand: committed_softening < 0; or the point has no shear
-// strength). The material must be
-// breakable; curve_area is softening_curve_area().
+// cohesive_traction at any point, bit for bit, without branches: the force kernel evaluates
+// it in vector registers for the damaged joints and those past a peak, and takes
+// cohesive_traction instead wherever `needs_full_law` is set (the point has no shear
+// strength, whose lengths the law leaves undefined). The material must be breakable;
+// curve_area is softening_curve_area(); committed_softening as for cohesive_traction.
 struct SoftenedTraction {
   double normal, shear;   // Pa, as in PointTraction
   double needs_full_law;  // > 0 or 0 (a double, so that the kernel vectorises)
@@ -143,9 +169,11 @@ inline SoftenedTraction softened_traction(const JointStrength& j, const Softenin
   const double sp = 2.0 * fs / k;
   const double ds = abs_s > sp ? (abs_s - sp) / softening_length(m.gf_II, fs, sp, m.curve_area) : 0.0;
   const double damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c
-  const double z = committed_softening;
+  // z(max(D, committed)), from the committed z where the damage does not grow and it is at hand
+  const double z_made = softening_curve(std::max(damage, committed_damage));
+  const double z = damage > committed_damage || !(committed_softening >= 0.0) ? z_made : committed_softening;
   SoftenedTraction t;
-  t.needs_full_law = (damage > committed_damage ? 1.0 : 0.0) + (z >= 0.0 ? 0.0 : 1.0) + (fs > 0.0 ? 0.0 : 1.0);
+  t.needs_full_law = fs > 0.0 ? 0.0 : 1.0;
   t.normal = o < 0.0 ? -compression : hardening(o / op) * z * ft;
   t.shear = std::copysign(hardening(abs_s / sp) * z * fs, s);
   return t;

@@ -72,7 +72,7 @@ struct Joints {                   // one per interior edge inside a material
   // [3 * joints] z(D) of the softening curve (joint_law.h) at each point's committed damage,
   // made by commit_joint_damage, and the damage it was made for: the force kernel takes z from
   // here while the damage is still that one (a point that does not soften further, most of a
-  // damaged joint's life), instead of an exp per point and step. Derived: never saved.
+  // damaged joint's life), instead of the curve per point and step. Derived: never saved.
   std::vector<double> softening, softened_damage;
   std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
   std::vector<double> work;             // [joints] work done on the joint since t = 0, J
