@@ -158,8 +158,8 @@ TEST_CASE("the pre-peak traction is the full law's, bit for bit, wherever it doe
 }
 
 TEST_CASE("the vector law is the full law's, bit for bit, wherever it does not flag a point", "[mechanics]") {
-  // Points with a committed damage from 0 to 1, its z(D) at hand or not, from deep compression
-  // to well past both peaks: the damage grows at some and stays at others. Only a point
+  // Points with a committed damage from 0 to 1, from deep compression to well past both
+  // peaks: the damage grows at some and stays at others. Only a point
   // without shear strength (the cohesionless soil out of compression) is flagged; everywhere
   // else the tractions must be the full law's.
   const auto [soil, cohesionless] = soils_with_and_without_cohesion();
@@ -175,9 +175,8 @@ TEST_CASE("the vector law is the full law's, bit for bit, wherever it does not f
       const double o = opening(rng) * std::pow(10.0, -4.0 * committed(rng));
       const double sl = slip(rng) * std::pow(10.0, -4.0 * committed(rng));
       const double d = committed(rng) < 0.1 ? 0.0 : committed(rng);
-      const double z = committed(rng) > 0.05 ? softening_curve(d) : kSofteningUnknown;
-      const SoftenedTraction t = softened_traction(strength, constants, o, sl, d, z);
-      const PointTraction full = cohesive_traction(*m, strength, o, sl, d, z);
+      const SoftenedTraction t = softened_traction(strength, constants, o, sl, d);
+      const PointTraction full = cohesive_traction(*m, strength, o, sl, d);
       if (t.needs_full_law > 0.0) {
         ++flagged;
         wrongly_flagged += !(m == &cohesionless && o >= 0.0);
@@ -232,13 +231,9 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
     s.nodes.y[i] = s.nodes.y0[i] + scale * unit(rng);
   }
   for (double& f : s.joints.strength_factor) f = factor(rng);
-  // Damaged joints, their z(D) at hand as the commit leaves it, on every 7th joint; on every
-  // 13th a damage whose z is not at hand (after a restart). The kernel's second vector pass
-  // takes both, whether the damage grows or not.
-  for (std::size_t j = 0; j < s.joints.size(); j += 7) {
-    s.joints.damage[3 * j + 1] = 0.3;
-    s.joints.softening[3 * j + 1] = softening_curve(0.3), s.joints.softened_damage[3 * j + 1] = 0.3;
-  }
+  // Damaged joints on every 7th and every 13th joint: the kernel's second vector pass takes
+  // them, whether their damage grows or not.
+  for (std::size_t j = 0; j < s.joints.size(); j += 7) s.joints.damage[3 * j + 1] = 0.3;
   for (std::size_t j = 5; j < s.joints.size(); j += 13) s.joints.damage[3 * j] = 0.6;
   for (std::size_t j = 3; j < s.joints.size(); j += 11) s.joints.broken[j] = 1;
 
@@ -269,38 +264,6 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
     INFO(threads << " thread(s)");
     CHECK(differing == 0);
   });
-}
-
-// Joints::softening holds z(D) of each point's committed damage, made at the commit, so that
-// the kernel skips the exp; it must give the forces of z computed afresh, and an entry made
-// for another damage (a stale one: the damage set since, as a restart or this test sets it)
-// must not be used.
-TEST_CASE("a damaged joint's forces are the same with the softening kept from the commit as with it computed afresh",
-          "[mechanics]") {
-  ydry_test::TempDir dir;
-  State s = setup_state(ydry_test::block_deck(dir, "left", {"mesh.size=[0.01, 0.01]"}));
-  Joints& jt = s.joints;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> damage(0.05, 0.95), move(-2e-8, 2e-8);
-  for (std::size_t i = 0; i < s.nodes.size(); ++i) s.nodes.x[i] = s.nodes.x0[i] + move(rng), s.nodes.y[i] = s.nodes.y0[i] + move(rng);
-  for (double& d : jt.damage) d = damage(rng);
-  REQUIRE(jt.softened_damage.size() == jt.damage.size());
-  const auto forces = [&] {
-    std::fill(jt.force.begin(), jt.force.end(), 0.0);
-    joint_forces(s, 0.0);
-    return jt.force;
-  };
-  std::fill(jt.softened_damage.begin(), jt.softened_damage.end(), 0.0);  // all stale: computed
-  const std::vector<double> afresh = forces();
-  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softening[q] = softening_curve(jt.damage[q]), jt.softened_damage[q] = jt.damage[q];
-  CHECK(ydry_test::same_bits(forces(), afresh));
-  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softening[q] = 0.5, jt.softened_damage[q] = jt.damage[q] + 0.01;
-  CHECK(ydry_test::same_bits(forces(), afresh));  // stale entries ignored
-  for (std::size_t q = 0; q < jt.damage.size(); ++q) jt.softened_damage[q] = jt.damage[q];
-  CHECK_FALSE(ydry_test::same_bits(forces(), afresh));  // current ones are read (0.5 is not z)
-  std::size_t nonzero = 0;
-  for (const double f : afresh) nonzero += f != 0.0;
-  CHECK(nonzero > afresh.size() / 2);  // the joints were loaded
 }
 
 TEST_CASE("the element kernel's vectorised loop gives the forces and stresses of its scalar remainder, bit for bit",

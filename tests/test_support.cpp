@@ -62,8 +62,6 @@ Snapshot state_snapshot(const ydry::State& s) {
       {"moisture term levels", m.term_level},
       {"moisture boundary nodes", as_doubles(m.boundary_node)},
       {"joint damage", s.joints.damage},
-      {"z of the committed joint damage", s.joints.softening},  // derived: a restart makes it again
-      {"damage of that z", s.joints.softened_damage},
       {"joint broken", as_doubles(s.joints.broken)},
       {"joint work", s.joints.work},
       {"joint force", s.joints.force},

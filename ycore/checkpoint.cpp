@@ -221,8 +221,6 @@ void restore_state(State& s, const Checkpoint& c) {
   require_finite(c, s.moisture.w, "moisture.w");
   check_contact_pairs(s, c);
   if (s.contact.builds > 0) index_contact_pairs(s);  // a broad phase has run: the pairs are current
-  // Derived, not saved: z of the committed damage, which the joint kernel's vector passes read.
-  for (std::size_t q = 0; q < s.joints.damage.size(); ++q) update_committed_softening(s.joints, q);
 }
 
 RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& s) {

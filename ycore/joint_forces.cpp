@@ -49,12 +49,6 @@ struct JointForceSum {
   }
 };
 
-// z(D) of joint point q's committed damage (Joints::softening), while the entry was made for
-// that damage; kSofteningUnknown otherwise.
-double committed_softening(const Joints& jt, std::size_t q) {
-  return q < jt.softened_damage.size() && jt.softened_damage[q] == jt.damage[q] ? jt.softening[q] : kSofteningUnknown;
-}
-
 // One chunk of joints as arrays over the chunk, so that the pre-peak pass vectorises.
 struct JointChunk {
   double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
@@ -78,7 +72,6 @@ struct SoftenedChunk {
   double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
   double tan_friction[kJointChunk], gf_I[kJointChunk], gf_II[kJointChunk];
   double damage[3][kJointChunk];     // committed, at the joint's three points
-  double softening[3][kJointChunk];  // z of it (Joints::softening), or kSofteningUnknown
   double needs_full_law[kJointChunk];
   double fresh[8][kJointChunk];
 };
@@ -172,11 +165,7 @@ void gather_softened(const State& s, std::size_t first, int count, JointChunk& c
     d.k[l] = strength.k, d.tensile[l] = strength.tensile, d.cohesion[l] = strength.cohesion;
     d.peak_opening[l] = strength.peak_opening;
     d.tan_friction[l] = m.tan_friction, d.gf_I[l] = m.gf_I, d.gf_II[l] = m.gf_II;
-    for (int p = 0; p < 3; ++p) {
-      const std::size_t q = 3 * j + p;
-      d.damage[p][l] = jt.damage[q];
-      d.softening[p][l] = committed_softening(jt, q);
-    }
+    for (int p = 0; p < 3; ++p) d.damage[p][l] = jt.damage[3 * j + p];
   }
 }
 
@@ -189,10 +178,9 @@ YDRY_AVX2_CLONE void softened_forces(SoftenedChunk& d, double thickness, double 
     const JointStrength strength{d.k[l], d.tensile[l], d.cohesion[l], d.peak_opening[l]};
     const SofteningConstants constants{d.tan_friction[l], d.gf_I[l], d.gf_II[l], curve_area};
     const double damage[3] = {d.damage[0][l], d.damage[1][l], d.damage[2][l]};
-    const double softening[3] = {d.softening[0][l], d.softening[1][l], d.softening[2][l]};
     double out[8];
     d.needs_full_law[l] = joint_forces_with(f, d.h0[l], thickness, [&](int p, double o, double sl, double& normal, double& shear) {
-      const SoftenedTraction t = softened_traction(strength, constants, o, sl, damage[p], softening[p]);
+      const SoftenedTraction t = softened_traction(strength, constants, o, sl, damage[p]);
       normal = t.normal, shear = t.shear;
       return t.needs_full_law;
     }, out);
@@ -256,8 +244,7 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
   joint_forces_with(f, h0, s.mechanics.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
-    const std::size_t q = 3 * j + p;
-    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[q], committed_softening(jt, q));
+    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
     normal = t.normal, shear = t.shear;
     return 0.0;
   }, out);

@@ -4,12 +4,6 @@
 
 namespace ydry {
 
-void update_committed_softening(Joints& jt, std::size_t q) {
-  if (q >= jt.softening.size() || jt.softened_damage[q] == jt.damage[q]) return;
-  jt.softening[q] = softening_curve(jt.damage[q]);
-  jt.softened_damage[q] = jt.damage[q];
-}
-
 double softening_curve_area() {
   static const double area = [] {
     constexpr int n = 20000;  // composite Simpson; z is smooth, so this is exact to 1e-12

@@ -43,10 +43,6 @@ inline double softening_curve(double damage) {
 // Its area on [0, 1] (0.3863): the softening branch dissipates f * delta * this.
 double softening_curve_area();
 
-// Makes Joints::softening of joint point q (3 j + p) z of the point's committed damage, where
-// it was made for another; the commit and a restart call it.
-void update_committed_softening(Joints& joints, std::size_t q);
-
 struct PointTraction {
   double normal = 0, shear = 0;  // Pa, on the first triangle's face (tension positive)
   double damage = 0;             // D of the current opening and slip, before the history
@@ -93,11 +89,8 @@ inline JointStrength joint_strength(const MaterialModel& m, double strength_fact
 // that pre-peak plus softening work is exactly gf_I (gf_II) per unit area. Mode II strength
 // c + sigma_n tan(phi) under compression (Fig. 2b). Compression is a linear penalty p o / h0.
 // In a material that is not breakable the joint is the linear penalty in both directions.
-// committed_softening: z(committed_damage) where the caller has it (Joints::softening), or
-// kSofteningUnknown.
-constexpr double kSofteningUnknown = -1.0;
 inline PointTraction cohesive_traction(const MaterialModel& m, const JointStrength& j, double o, double s,
-                                       double committed_damage, double committed_softening = kSofteningUnknown) {
+                                       double committed_damage) {
   const double k = j.k;
   if (!m.breakable) return {k * o, k * s, 0.0};
 
@@ -114,10 +107,7 @@ inline PointTraction cohesive_traction(const MaterialModel& m, const JointStreng
     if (abs_s > sp) ds = (abs_s - sp) / joint_law_detail::softening_length(m.gf_II, fs, sp);
   }
   if (dn > 0.0 || ds > 0.0) t.damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c: failure at D = 1
-  // z(max(D, committed))
-  const double z = t.damage > committed_damage ? softening_curve(t.damage)
-                   : committed_softening >= 0.0 ? committed_softening
-                                                : softening_curve(committed_damage);
+  const double z = softening_curve(std::max(t.damage, committed_damage));
   t.normal = o < 0.0 ? -compression : joint_law_detail::hardening(o / op) * z * ft;
   if (fs > 0.0) t.shear = std::copysign(joint_law_detail::hardening(abs_s / sp) * z * fs, s);
   return t;
@@ -146,7 +136,7 @@ inline PrePeakTraction pre_peak_traction(const JointStrength& j, double tan_fric
 // it in vector registers for the damaged joints and those past a peak, and takes
 // cohesive_traction instead wherever `needs_full_law` is set (the point has no shear
 // strength, whose lengths the law leaves undefined). The material must be breakable;
-// curve_area is softening_curve_area(); committed_softening as for cohesive_traction.
+// curve_area is softening_curve_area().
 struct SoftenedTraction {
   double normal, shear;   // Pa, as in PointTraction
   double needs_full_law;  // > 0 or 0 (a double, so that the kernel vectorises)
@@ -155,7 +145,7 @@ struct SofteningConstants {  // the material's, for softened_traction
   double tan_friction, gf_I, gf_II, curve_area;
 };
 inline SoftenedTraction softened_traction(const JointStrength& j, const SofteningConstants& m, double o, double s,
-                                          double committed_damage, double committed_softening) {
+                                          double committed_damage) {
   using joint_law_detail::hardening;
   using joint_law_detail::softening_length;
   const double k = j.k, ft = j.tensile, op = j.peak_opening;
@@ -169,9 +159,7 @@ inline SoftenedTraction softened_traction(const JointStrength& j, const Softenin
   const double sp = 2.0 * fs / k;
   const double ds = abs_s > sp ? (abs_s - sp) / softening_length(m.gf_II, fs, sp, m.curve_area) : 0.0;
   const double damage = std::min(1.0, std::sqrt(dn * dn + ds * ds));  // Fig. 2c
-  // z(max(D, committed)), from the committed z where the damage does not grow and it is at hand
-  const double z_made = softening_curve(std::max(damage, committed_damage));
-  const double z = damage > committed_damage || !(committed_softening >= 0.0) ? z_made : committed_softening;
+  const double z = softening_curve(std::max(damage, committed_damage));
   SoftenedTraction t;
   t.needs_full_law = fs > 0.0 ? 0.0 : 1.0;
   t.normal = o < 0.0 ? -compression : hardening(o / op) * z * ft;

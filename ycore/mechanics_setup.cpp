@@ -90,8 +90,6 @@ void set_joint_data(State& s, const Deck& deck) {
   j.material.resize(nj);
   j.length0.resize(nj);
   j.damage.assign(3 * nj, 0.0);
-  j.softening.assign(3 * nj, 1.0);  // z(0)
-  j.softened_damage.assign(3 * nj, 0.0);
   j.force.assign(8 * nj, 0.0);
   j.work.assign(nj, 0.0);
   s.nodes.joint_slot.assign(2 * n.size(), kNoIndex);

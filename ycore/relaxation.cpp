@@ -328,7 +328,6 @@ std::size_t commit_joint_damage(State& s) {
       double& d = jt.damage[3 * j + p];
       const double o = a * k.opening[0] + b * k.opening[1], sl = a * k.slip[0] + b * k.slip[1];
       d = std::max(d, cohesive_traction(m, jt.strength_factor[j], jt.length0[j], o, sl, d).damage);
-      update_committed_softening(jt, 3 * j + p);
       failed += d >= 1.0;
     }
     if (failed >= 2) {

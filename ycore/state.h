@@ -69,11 +69,6 @@ struct Joints {                   // one per interior edge inside a material
                                         // and cohesion (strength_heterogeneity; 1 without)
   std::vector<double> damage;           // [3 * joints] committed damage D at the two ends and
                                         // the middle (never decreases: joints do not heal)
-  // [3 * joints] z(D) of the softening curve (joint_law.h) at each point's committed damage,
-  // made by commit_joint_damage, and the damage it was made for: the force kernel takes z from
-  // here while the damage is still that one (a point that does not soften further, most of a
-  // damaged joint's life), instead of the curve per point and step. Derived: never saved.
-  std::vector<double> softening, softened_damage;
   std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
   std::vector<double> work;             // [joints] work done on the joint since t = 0, J
   // The joints of a material with mechanics, as runs of consecutive joints: run r is
