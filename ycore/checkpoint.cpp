@@ -6,7 +6,6 @@
 
 #include "version.h"
 #include "ycore/contact_search.h"
-#include "ycore/joint_law.h"
 
 namespace ydry {
 namespace {
