@@ -78,8 +78,10 @@ struct SoftenedChunk {
 
 // A joint's forces from the coordinates of its nodes, with traction(p, o, s) the law at point p
 // (its normal and shear traction and a flag); returns the sum of the three points' flags.
+// Always inlined: the vector passes vectorise only with it inside their loops, and GCC, left
+// to itself, calls the softened law's copy (the larger one) out of line, in scalar code.
 template <class Traction>
-inline double joint_forces_with(const JointFrame& f, double h0, double thickness, Traction traction, double out[8]) {
+[[gnu::always_inline]] inline double joint_forces_with(const JointFrame& f, double h0, double thickness, Traction traction, double out[8]) {
   JointForceSum sum;
   double flags = 0.0;
 #pragma GCC unroll 3
