@@ -9,13 +9,13 @@
 // Most joints, most of the time, are intact and before both peaks of the law at all three
 // points. The kernel takes each thread's joints (ycore/ownership.h) of a material with mechanics
 // (Joints::mechanical_runs; a rigid material's joints carry nothing, ever) in chunks of
-// kJointChunk: the chunk's node coordinates and joint constants are copied into arrays; the
-// pre-peak law (pre_peak_traction) runs over the whole chunk in vector registers; the joints
-// that are damaged or past a peak at some point are copied into a second set of arrays, over
-// which the whole law (softened_traction, with ydry's own exp in z(D)) runs in vector
-// registers; each joint that neither could take (its material cannot break; a point has no
-// shear strength) is done again with the scalar law (joint_nodal_forces), broken joints are
-// zeroed, and every joint's work and forces are stored.
+// kJointChunk, sorted into passes: the node coordinates and constants of the undamaged joints
+// are copied into arrays, over which the pre-peak law (pre_peak_traction) runs in vector
+// registers; the damaged joints, and those the pre-peak law finds past a peak at some point,
+// are copied into a second set of arrays, over which the whole law (softened_traction, with
+// ydry's own exp in z(D)) runs in vector registers; each joint that neither could take (its
+// material cannot break; a point has no shear strength) is done with the scalar law
+// (joint_nodal_forces), broken joints are zeroed, and every joint's work and forces are stored.
 // The vector laws do the same operations in the same order as the full law where they apply,
 // and this file is compiled without FMA contraction (CMakeLists.txt), so the result is the full
 // law's, bit for bit (tests/test_mechanics.cpp).
@@ -49,24 +49,38 @@ struct JointForceSum {
   }
 };
 
-// One chunk of joints as arrays over the chunk, so that the pre-peak pass vectorises.
-struct JointChunk {
+// How the kernel takes a joint of the chunk.
+enum class JointPass : std::uint8_t {
+  broken,    // carries nothing
+  pre_peak,  // the pre-peak law, in vector registers
+  softened,  // the whole law, in vector registers
+  scalar     // neither vector law's (its material cannot break; a point without shear strength)
+};
+
+// Every joint of a chunk: its pass and its forces on nodes 0..3 (x, y).
+struct ChunkForces {
+  JointPass pass[kJointChunk];
+  double fresh[8][kJointChunk];
+};
+
+// The chunk's intact joints of a breakable material without damage, as arrays over them, so
+// that the pre-peak law vectorises.
+struct PrePeakChunk {
+  int count = 0;
+  int joint[kJointChunk];                       // its index in the chunk
   double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
   double h0[kJointChunk], tan_friction[kJointChunk];
   // JointStrength:
   double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
-  bool carries_nothing[kJointChunk];  // broken
-  bool full_law[kJointChunk];         // that, damaged or not breakable: not the pre-peak law's
-  double past_peak[kJointChunk];      // > 0: a point past a peak, not the pre-peak law's either
-  bool scalar_law[kJointChunk];       // neither vector law's: joint_nodal_forces
-  double fresh[8][kJointChunk];       // forces on nodes 0..3 (x, y)
+  double past_peak[kJointChunk];  // > 0: a point past a peak, for the whole law
+  double fresh[8][kJointChunk];
 };
 
-// The chunk's joints that the pre-peak law cannot take, intact and of a breakable material,
-// as arrays over them, so that the whole law vectorises.
+// The chunk's joints with damage and those the pre-peak law found past a peak, as arrays over
+// them, so that the whole law vectorises.
 struct SoftenedChunk {
   int count = 0;
-  int lane[kJointChunk];                        // its index in the JointChunk
+  int joint[kJointChunk];                       // its index in the chunk
   double x[4][kJointChunk], y[4][kJointChunk];  // nodes 0..3
   double h0[kJointChunk];
   double k[kJointChunk], tensile[kJointChunk], cohesion[kJointChunk], peak_opening[kJointChunk];
@@ -102,33 +116,61 @@ template <class Traction>
 // asked for this many joints ahead.
 constexpr std::size_t kPrefetchJoints = 24;
 
-void gather_chunk(const State& s, std::size_t first, int count, JointChunk& c) {
+// Joint i of the chunk, with the coordinates of its nodes 0..3 and its strength, into d.
+void add_softened(SoftenedChunk& d, int i, const double x[4], const double y[4], const JointStrength& strength,
+                  double h0, const MaterialModel& m, const double damage[3]) {
+  const int l = d.count++;
+  d.joint[l] = i;
+  for (int k = 0; k < 4; ++k) d.x[k][l] = x[k], d.y[k][l] = y[k];
+  d.h0[l] = h0;
+  d.k[l] = strength.k, d.tensile[l] = strength.tensile, d.cohesion[l] = strength.cohesion;
+  d.peak_opening[l] = strength.peak_opening;
+  d.tan_friction[l] = m.tan_friction, d.gf_I[l] = m.gf_I, d.gf_II[l] = m.gf_II;
+  for (int p = 0; p < 3; ++p) d.damage[p][l] = damage[p];
+}
+
+// Sorts the chunk's joints into their passes: the undamaged ones of a breakable material into
+// c, the damaged ones into d.
+void gather_chunk(const State& s, std::size_t first, int count, ChunkForces& out, PrePeakChunk& c,
+                  SoftenedChunk& d) {
   const Nodes& n = s.nodes;
   const Joints& jt = s.joints;
+  c.count = d.count = 0;
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
     if (j + kPrefetchJoints < jt.size()) {
       const index_t ahead = jt.node[4 * (j + kPrefetchJoints) + 2];
       for (const double* a : {&n.x[ahead], &n.y[ahead], &n.vx[ahead], &n.vy[ahead]}) __builtin_prefetch(a);
     }
-    const index_t* node = &jt.node[4 * j];
-    for (int k = 0; k < 4; ++k) c.x[k][i] = n.x[node[k]], c.y[k][i] = n.y[node[k]];
     const MaterialModel& m = s.materials[jt.material[j]];
+    if (jt.broken[j] || !m.breakable) {
+      out.pass[i] = jt.broken[j] ? JointPass::broken : JointPass::scalar;
+      continue;
+    }
+    const index_t* node = &jt.node[4 * j];
+    double x[4], y[4];
+    for (int k = 0; k < 4; ++k) x[k] = n.x[node[k]], y[k] = n.y[node[k]];
+    const JointStrength strength = joint_strength(m, jt.strength_factor[j], jt.length0[j]);
     const double* damage = &jt.damage[3 * j];
-    c.carries_nothing[i] = jt.broken[j];
-    c.full_law[i] = c.carries_nothing[i] || !m.breakable || damage[0] > 0.0 || damage[1] > 0.0 || damage[2] > 0.0;
-    // A joint left to the full law still goes through the vector pass: give it a harmless law.
-    const JointStrength strength = c.full_law[i] ? JointStrength{1.0, 1.0, 1.0, 2.0}
-                                                 : joint_strength(m, jt.strength_factor[j], jt.length0[j]);
-    c.h0[i] = jt.length0[j];
-    c.tan_friction[i] = m.tan_friction;
-    c.k[i] = strength.k, c.tensile[i] = strength.tensile, c.cohesion[i] = strength.cohesion;
-    c.peak_opening[i] = strength.peak_opening;
+    if (damage[0] > 0.0 || damage[1] > 0.0 || damage[2] > 0.0) {
+      out.pass[i] = JointPass::softened;
+      add_softened(d, i, x, y, strength, jt.length0[j], m, damage);
+      continue;
+    }
+    out.pass[i] = JointPass::pre_peak;
+    const int p = c.count++;
+    c.joint[p] = i;
+    for (int k = 0; k < 4; ++k) c.x[k][p] = x[k], c.y[k][p] = y[k];
+    c.h0[p] = jt.length0[j];
+    c.tan_friction[p] = m.tan_friction;
+    c.k[p] = strength.k, c.tensile[p] = strength.tensile, c.cohesion[p] = strength.cohesion;
+    c.peak_opening[p] = strength.peak_opening;
   }
 }
 
-// The pre-peak law at every joint of the chunk; flags the joints past a peak.
-YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness) {
+// The pre-peak law at every joint of c; flags the joints past a peak.
+YDRY_AVX2_CLONE void pre_peak_forces(PrePeakChunk& c, double thickness) {
+  const int count = c.count;
   for (int i = 0; i < count; ++i) {
     const JointFrame f = joint_frame(c.x[0][i], c.x[1][i], c.x[2][i], c.x[3][i], c.y[0][i], c.y[1][i],
                                      c.y[2][i], c.y[3][i]);
@@ -145,29 +187,21 @@ YDRY_AVX2_CLONE void pre_peak_forces(JointChunk& c, int count, double thickness)
   }
 }
 
-// Copies the chunk's intact joints of a breakable material that the pre-peak law could not
-// take into d; marks every joint that neither vector law will take.
-void gather_softened(const State& s, std::size_t first, int count, JointChunk& c, SoftenedChunk& d) {
+// The pre-peak law's forces into the chunk, or, for a joint past a peak, the joint into d.
+void take_pre_peak(const State& s, std::size_t first, const PrePeakChunk& c, ChunkForces& out, SoftenedChunk& d) {
   const Joints& jt = s.joints;
-  d.count = 0;
-  for (int i = 0; i < count; ++i) {
-    c.scalar_law[i] = false;
-    if (c.carries_nothing[i] || !(c.full_law[i] || c.past_peak[i] > 0.0)) continue;
-    const std::size_t j = first + std::size_t(i);
-    const MaterialModel& m = s.materials[jt.material[j]];
-    if (!m.breakable) {
-      c.scalar_law[i] = true;
+  for (int p = 0; p < c.count; ++p) {
+    const int i = c.joint[p];
+    if (c.past_peak[p] > 0.0) {
+      const std::size_t j = first + std::size_t(i);
+      const double x[4] = {c.x[0][p], c.x[1][p], c.x[2][p], c.x[3][p]};
+      const double y[4] = {c.y[0][p], c.y[1][p], c.y[2][p], c.y[3][p]};
+      const JointStrength strength{c.k[p], c.tensile[p], c.cohesion[p], c.peak_opening[p]};
+      out.pass[i] = JointPass::softened;
+      add_softened(d, i, x, y, strength, c.h0[p], s.materials[jt.material[j]], &jt.damage[3 * j]);
       continue;
     }
-    const int l = d.count++;
-    d.lane[l] = i;
-    for (int k = 0; k < 4; ++k) d.x[k][l] = c.x[k][i], d.y[k][l] = c.y[k][i];
-    const JointStrength strength = joint_strength(m, jt.strength_factor[j], jt.length0[j]);
-    d.h0[l] = jt.length0[j];
-    d.k[l] = strength.k, d.tensile[l] = strength.tensile, d.cohesion[l] = strength.cohesion;
-    d.peak_opening[l] = strength.peak_opening;
-    d.tan_friction[l] = m.tan_friction, d.gf_I[l] = m.gf_I, d.gf_II[l] = m.gf_II;
-    for (int p = 0; p < 3; ++p) d.damage[p][l] = jt.damage[3 * j + p];
+    for (int k = 0; k < 8; ++k) out.fresh[k][i] = c.fresh[k][p];
   }
 }
 
@@ -191,33 +225,33 @@ YDRY_AVX2_CLONE void softened_forces(SoftenedChunk& d, double thickness, double 
   }
 }
 
-// The softened pass's forces into the chunk, or its flag for the full law.
-void scatter_softened(const SoftenedChunk& d, JointChunk& c) {
+// The softened pass's forces into the chunk, or the joint to the scalar law.
+void take_softened(const SoftenedChunk& d, ChunkForces& out) {
   for (int l = 0; l < d.count; ++l) {
-    const int i = d.lane[l];
+    const int i = d.joint[l];
     if (d.needs_full_law[l] > 0.0) {
-      c.scalar_law[i] = true;
+      out.pass[i] = JointPass::scalar;
       continue;
     }
-    for (int k = 0; k < 8; ++k) c.fresh[k][i] = d.fresh[k][l];
+    for (int k = 0; k < 8; ++k) out.fresh[k][i] = d.fresh[k][l];
   }
 }
 
 // Work over the step by the trapezoid of the forces before and after it (exact for a linear
 // spring, so a vibrating joint books no spurious work), then the new forces; the full law
 // where the chunk says so. Broken joints carry nothing and take no work.
-void store_chunk(State& s, std::size_t first, int count, const JointChunk& c, double dt) {
+void store_chunk(State& s, std::size_t first, int count, const ChunkForces& c, double dt) {
   const Nodes& n = s.nodes;
   Joints& jt = s.joints;
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
     double* f = &jt.force[8 * j];
-    if (c.carries_nothing[i]) {
+    if (c.pass[i] == JointPass::broken) {
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
       continue;
     }
     double fresh[8];
-    if (c.scalar_law[i])
+    if (c.pass[i] == JointPass::scalar)
       joint_nodal_forces(s, j, fresh);
     else
       for (int k = 0; k < 8; ++k) fresh[k] = c.fresh[k][i];
@@ -261,19 +295,20 @@ void joint_forces(State& s, double dt) {
     // The thread's joints of a material with mechanics: its range cut by the runs (a few
     // hundred on the Peron mesh, one where no material is rigid) that begin before its end.
     const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
-    JointChunk chunk;
+    ChunkForces forces;
+    PrePeakChunk pre_peak;
     SoftenedChunk softened;
     for (std::size_t r = 0; r < runs.size() && runs[r] < owned.end; r += 2) {
       const std::size_t begin = std::max<std::size_t>(runs[r], owned.begin);
       const std::size_t end = std::min<std::size_t>(runs[r + 1], owned.end);
       for (std::size_t first = begin; first < end; first += kJointChunk) {
         const int count = int(std::min<std::size_t>(kJointChunk, end - first));
-        gather_chunk(s, first, count, chunk);
-        pre_peak_forces(chunk, count, thickness);
-        gather_softened(s, first, count, chunk, softened);
+        gather_chunk(s, first, count, forces, pre_peak, softened);
+        pre_peak_forces(pre_peak, thickness);
+        take_pre_peak(s, first, pre_peak, forces, softened);
         softened_forces(softened, thickness, curve_area);
-        scatter_softened(softened, chunk);
-        store_chunk(s, first, count, chunk, dt);
+        take_softened(softened, forces);
+        store_chunk(s, first, count, forces, dt);
       }
     }
   }
