@@ -95,7 +95,8 @@ struct SoftenedChunk {
 // Always inlined: the vector passes vectorise only with it inside their loops, and GCC, left
 // to itself, calls the softened law's copy (the larger one) out of line, in scalar code.
 template <class Traction>
-[[gnu::always_inline]] inline double joint_forces_with(const JointFrame& f, double h0, double thickness, Traction traction, double out[8]) {
+[[gnu::always_inline]] inline double joint_forces_with(const JointFrame& f, double h0, double thickness,
+                                                       Traction traction, double out[8]) {
   JointForceSum sum;
   double flags = 0.0;
 #pragma GCC unroll 3
