@@ -252,18 +252,23 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
   }
   CHECK(before_peaks > 200);
   CHECK(other > 200);
-  ydry_test::on_1_and_2_threads([&](int threads) {
-    std::fill(s.joints.force.begin(), s.joints.force.end(), 0.0);
-    joint_forces(s, 0.0);
-    std::size_t differing = 0;
-    for (std::size_t j = 0; j < s.joints.size(); ++j) {
-      double full[8];
-      joint_nodal_forces(s, j, full);
-      for (int k = 0; k < 8; ++k) differing += !ydry_test::same_bits({full[k]}, {s.joints.force[8 * j + k]});
-    }
-    INFO(threads << " thread(s)");
-    CHECK(differing == 0);
-  });
+  // Then the same joints of a material that cannot break: the kernel leaves them to the
+  // scalar law, a linear penalty both ways.
+  for (const bool breakable : {true, false}) {
+    for (MaterialModel& m : s.materials) m.breakable = breakable;
+    ydry_test::on_1_and_2_threads([&](int threads) {
+      std::fill(s.joints.force.begin(), s.joints.force.end(), 0.0);
+      joint_forces(s, 0.0);
+      std::size_t differing = 0;
+      for (std::size_t j = 0; j < s.joints.size(); ++j) {
+        double full[8];
+        joint_nodal_forces(s, j, full);
+        for (int k = 0; k < 8; ++k) differing += !ydry_test::same_bits({full[k]}, {s.joints.force[8 * j + k]});
+      }
+      INFO(threads << " thread(s), breakable " << breakable);
+      CHECK(differing == 0);
+    });
+  }
 }
 
 TEST_CASE("the element kernel's vectorised loop gives the forces and stresses of its scalar remainder, bit for bit",
