@@ -3,10 +3,10 @@
 // joint and contact forces; once per relaxation also 50-70 moisture steps, the breakage commit
 // and the split of the moisture nodes: under 1.5 % of the time, bench/RESULTS.md). At 1
 // thread and at all threads, from one and the same state (the runs are bitwise the same, so
-// both do the same work). Then, as a measure of the machine, the element pass alone (the
+// both do the same work). Then, as measures of the machine, the element pass alone (the
 // co-rotational triangle forces with the nodes' integration fused in, no joints, no contact)
-// over the same mesh: issue 6 sets its target against such a bare kernel. Figures to report,
-// not tests.
+// over the same mesh, and the triangle forces alone (no integration either: the bare elastic
+// kernel issue 6 sets its target against). Figures to report, not tests.
 //   bench_mechanics [rectangle] [peron]     (both when none is named)
 #include <omp.h>
 
@@ -88,14 +88,15 @@ Timed time_relaxations(const ydry::State& start, const ydry::Deck& deck, int thr
   return t;
 }
 
-// Seconds of `steps` element passes over a copy of `start` on `threads` threads: the nodes
-// move undamped by the stable pseudo-step, as in a relaxation's step.
-double time_element_pass(const ydry::State& start, int threads, int steps) {
+// Seconds of `steps` element passes over a copy of `start` on `threads` threads: with
+// `integrate`, the nodes move undamped by the stable pseudo-step, as in a relaxation's step;
+// without, the forces of the same positions again and again.
+double time_element_pass(const ydry::State& start, int threads, int steps, bool integrate) {
   omp_set_num_threads(threads);
   ydry::State s = start;
   const ydry::VelocityUpdate undamped{1.0, 0.0, 1.0, s.mechanics.step_s};
   const auto t0 = std::chrono::steady_clock::now();
-  for (int k = 0; k < steps; ++k) ydry::element_forces(s, &undamped);
+  for (int k = 0; k < steps; ++k) ydry::element_forces(s, integrate ? &undamped : nullptr);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -132,12 +133,15 @@ int bench(const Case& c) {
   std::printf("mechanics %s: element-steps/s: %.3g at 1 thread, %.3g at %d threads (speed-up %.2f)\n", c.name,
               rate_one, rate_all, max_threads, rate_all / rate_one);
   constexpr int kElementPasses = 500;
-  const double pass_one = time_element_pass(start, 1, kElementPasses);
-  const double pass_all = time_element_pass(start, max_threads, kElementPasses);
-  std::printf("mechanics %s: the element pass alone (no joints, no contact; the machine's measure): element-steps/s: "
-              "%.3g at 1 thread, %.3g at %d threads\n",
-              c.name, double(triangles) * kElementPasses / pass_one, double(triangles) * kElementPasses / pass_all,
-              max_threads);
+  for (const bool integrate : {true, false}) {
+    const double pass_one = time_element_pass(start, 1, kElementPasses, integrate);
+    const double pass_all = time_element_pass(start, max_threads, kElementPasses, integrate);
+    std::printf("mechanics %s: %s: element-steps/s: %.3g at 1 thread, %.3g at %d threads\n", c.name,
+                integrate ? "the element pass alone (no joints, no contact; the machine's measure)"
+                          : "the triangle forces alone (no integration either: the bare kernel)",
+                double(triangles) * kElementPasses / pass_one, double(triangles) * kElementPasses / pass_all,
+                max_threads);
+  }
   std::fflush(stdout);
   // A check on a large mesh, where every loop runs in parallel (the tests force small ones to).
   const bool same = one.end.nodes.x == all.end.nodes.x && one.end.nodes.y == all.end.nodes.y &&
