@@ -266,3 +266,27 @@ TEST_CASE("a block carried off its rest by the extrapolated start is pulled back
     CHECK(farthest < 1e-3 * kCarry);
   }
 }
+
+// A falling motion is not extrapolated past the contact buffer (ycore/relaxation.cpp,
+// predict_equilibrium): the block at rest on its base is given a last motion of 0.2 m down,
+// four times the base's depth. Extrapolated whole, the jump would put the block below the
+// base, which no contact would then hold, and it would fall on; limited to the buffer, it
+// starts a buffer deep in the base and the contacts push it back onto the base's top. (Where
+// along the top it comes to rest, within microns, is the friction's business.)
+TEST_CASE("a block whose last motion was a fall is not carried through the rigid base it falls onto",
+          "[contact][mechanics]") {
+  const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  constexpr double kFall = 0.2, kCouplingStep = 1.0;  // m, s
+  State s = rest;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    if (!(s.nodes.constraint[i] & kFixY)) s.nodes.vy[i] = -kFall / kCouplingStep;
+  const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, RelaxationMethod::fire}, kCouplingStep);
+  CHECK_FALSE(result.capped);  // a block that fell through would never balance
+  double bottom = INFINITY, bottom_at_rest = INFINITY;
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    if (!(s.nodes.constraint[i] & kFixY)) {
+      bottom = std::min(bottom, s.nodes.y[i]);
+      bottom_at_rest = std::min(bottom_at_rest, rest.nodes.y[i]);
+    }
+  CHECK(std::fabs(bottom - bottom_at_rest) < 1e-3 * s.contact.buffer_m);
+}

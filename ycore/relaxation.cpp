@@ -195,11 +195,25 @@ void start_motion(State& s) {
 // that walked the Peron deck's right end block 6.5 um a relaxation after the drying had
 // stopped.) Like the driven nodes' jump, the prediction is seen as a velocity by one force
 // evaluation, so the joints and contacts book its work; prescribed components start at rest.
+//
+// A node's jump is at most the contact buffer (a tenth of the shortest edge). Drying moves a
+// node microns between relaxations; a node that moved farther is not drifting but falling or
+// snapping (a fragment come loose, a crack that opened), and its motion does not go on. Carried
+// on unbounded, such a motion grows from one relaxation to the next, and a jump longer than the
+// buffer can take a node past a contact surface the broad phase never saw it near: a loose
+// triangle of the Peron deck fell through the rigid base that way (bench/RESULTS.md,
+// session 23). Within the buffer the relaxation's own pseudo-steps meet the surface.
 void predict_equilibrium(State& s, double coupling_dt, double dt) {
   Nodes& n = s.nodes;
+  const double limit = s.contact.buffer_m;
   for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
-    const double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
-    const double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
+    double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
+    double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
+    const double length = std::sqrt(jump_x * jump_x + jump_y * jump_y);
+    if (length > limit) {
+      jump_x *= limit / length;
+      jump_y *= limit / length;
+    }
     n.x[i] += jump_x;
     n.y[i] += jump_y;
     n.vx[i] = jump_x / dt;
