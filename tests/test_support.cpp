@@ -25,7 +25,9 @@ const std::vector<std::string> kCrackingLayer = {
     "materials.soil.shrinkage_coefficient=0.4",
     "materials.soil.gf_I=0.02",
     "solver.relaxation_tolerance=1e-4",
-    "solver.relaxation_max_steps=3000"};
+    "solver.relaxation_max_steps=3000",
+    "solver.joint_penalty=100.0",
+    "contact.penalty=4.0e7"};
 
 namespace {
 
