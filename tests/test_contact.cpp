@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 
 #include "tests/test_support.h"
 #include "ycore/contact.h"
+#include "ycore/contact_geometry.h"
 #include "ycore/mechanics.h"
 #include "ycore/run.h"
 #include "ycrack/node_sharing.h"
@@ -289,4 +291,44 @@ TEST_CASE("a block whose last motion was a fall is not carried through the rigid
       bottom_at_rest = std::min(bottom_at_rest, rest.nodes.y[i]);
     }
   CHECK(std::fabs(bottom - bottom_at_rest) < 1e-3 * s.contact.buffer_m);
+}
+
+// The contact kernel skips a corner that clearly_outside finds outside all its edges
+// (contact_forces.cpp, idle_corner), which leaves the forces bit for bit as they were only if
+// project() would have found it outside too (gap > 0, so no touch). Corners on the line of an
+// edge and from 1e-19 to 1e-6 of its length either side, edges of 1 um to 10 cm at any angle
+// and anywhere in a 30 cm domain: the shortcut never says outside where project() does not,
+// and it does say outside for every corner more than 1e-9 of the edge's length out.
+TEST_CASE("a corner the contact kernel skips as clearly outside its edge is outside by the projection too",
+          "[contact]") {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Nodes n;
+  n.x.assign(6, 0.0);
+  n.y.assign(6, 0.0);
+  constexpr index_t kEdge = 0, kCorner = 3;  // edge 0 -> 1 of triangle 0, a corner of triangle 1
+  int skipped = 0, inside_or_on = 0, unsure = 0;
+  for (int sample = 0; sample < 400000; ++sample) {
+    const double length = std::pow(10.0, -6.0 + 5.0 * unit(rng)), angle = 2.0 * M_PI * unit(rng);
+    const double tx = std::cos(angle), ty = std::sin(angle);
+    n.x[0] = 0.3 * unit(rng), n.y[0] = -0.01 + 0.03 * unit(rng);
+    n.x[1] = n.x[0] + length * tx, n.y[1] = n.y[0] + length * ty;
+    const double along = -0.5 + 2.0 * unit(rng);
+    const double depth = sample % 4 == 0 ? 0.0 : std::copysign(length * std::pow(10.0, -19.0 + 13.0 * unit(rng)), unit(rng) - 0.5);
+    n.x[kCorner] = n.x[0] + along * length * tx + depth * ty;  // outward normal (ty, -tx)
+    n.y[kCorner] = n.y[0] + along * length * ty - depth * tx;
+    const bool outside = clearly_outside(n, kCorner, kEdge);
+    const double gap = project(n, kCorner, kEdge).gap;
+    if (outside) {
+      ++skipped;
+      if (!(gap > 0.0)) FAIL("corner at depth " << depth << " of an edge " << length << " m long: gap " << gap);
+    } else if (depth > 1e-9 * length) {
+      ++unsure;
+    } else {
+      ++inside_or_on;
+    }
+  }
+  CHECK(unsure == 0);
+  CHECK(skipped > 100000);
+  CHECK(inside_or_on > 100000);
 }
