@@ -107,7 +107,9 @@ void element_forces(State& s, const VelocityUpdate* move_first) {
   for_each_material_run(s, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
     for (std::size_t first = begin, last; first < end; first = last) {
       last = std::min(end, first + kMovedTogether);
-      if (move_first) integrate_node_range(s, 3 * first, 3 * last, *move_first);
+      // A rigid material's nodes are fixed: the integration would keep every value (a third
+      // of the Peron deck's nodes).
+      if (move_first && !m.rigid) integrate_node_range(s, 3 * first, 3 * last, *move_first);
       if (m.mechanical) {
         material_run_forces(first, last, n.x.data(), n.y.data(), tri.inv0.data(), tri.area0.data(),
                             tri.mass_kg.data(), tri.shrinkage_strain.data(), n.fx.data(), n.fy.data(), m, thickness,
