@@ -46,7 +46,7 @@ verify:
 
 # Throughput figures, appended to bench/RESULTS.md (2 to 5 minutes on this 2-core machine).
 # PERON_RUN=DIR adds the end-to-end figures of a completed run of the Peron deck;
-# PERON=1 makes that run first, into runs/peron_bench (about 10 minutes on 2 cores).
+# PERON=1 makes that run first, into runs/peron_bench (8-9 minutes on 2 cores).
 bench: build
 	$(PYTHON) bench/run_bench.py --build $(BUILD) $(if $(PERON_RUN),--peron-run $(PERON_RUN)) \
 	  $(if $(filter 1,$(PERON)),--peron)

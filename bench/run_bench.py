@@ -6,7 +6,7 @@ of bench_moisture (moisture node-steps per second) and bench_mechanics (element-
 second of the 200k-triangle cracking rectangle and of the Peron mesh, at 1 thread and at all
 threads), and appends all of it to RESULTS.md as a dated section with the command that made
 it. The Peron end-to-end figures (wall time, steps) come from a full run's summary.json: one
-made before (--peron-run DIR), or one this script makes first (--peron: about 50 minutes).
+made before (--peron-run DIR), or one this script makes first (--peron: 8-9 minutes on 2 cores).
 
 examples:
   bench/run_bench.py                           # what `make bench` runs
@@ -94,7 +94,7 @@ def main():
     peron_run = args.peron_run
     if args.peron:
         peron_run = REPO / "runs" / "peron_bench"
-        print(f"running inputs/peron/peron.toml into {peron_run} (about 50 minutes)", flush=True)
+        print(f"running inputs/peron/peron.toml into {peron_run} (8-9 minutes on 2 cores)", flush=True)
         if ydry_case.run_ydry(args.build / "ydry", REPO / "inputs/peron/peron.toml", peron_run) is None:
             sys.exit("run_bench.py: the Peron run failed")
     lines += run_bench(args.build / "bench" / "bench_moisture")

@@ -2,7 +2,7 @@
 """Verification case peron: the paper's section 5 simulation of Peron et al. (2009) (issue 5).
 
 Runs ydry on inputs/peron/peron.toml (a 295 x 12 mm silt layer drying on a notched rigid base
-for 460,000 s; 10 minutes or more) on every core, or with --run DIR checks a run of that deck
+for 460,000 s; 8-9 minutes on 2 cores) on every core, or with --run DIR checks a run of that deck
 made before, and compares its final figures with the experiment and the paper: the crack
 count and mean width of the cracks open on the top surface (7 +- 1; 0.836 mm +- 10 %), the horizontal displacement of the
 right end of the top surface (|u_x| 0.67 mm +- 15 %), a mean width stable over the last 20 %
@@ -47,7 +47,7 @@ def run_deck(ydry, outdir):
     prints the wall time. False if ydry failed."""
     os.environ.pop("OMP_NUM_THREADS", None)
     print(f"# running ydry on {DECK.relative_to(ydry_case.REPO)} into {outdir} on every core "
-          "(10 minutes or more)", flush=True)
+          "(8-9 minutes on 2 cores)", flush=True)
     wall = ydry_case.run_ydry(ydry, DECK, outdir)
     if wall is not None:
         print(f"# ydry wall time {wall:.0f} s ({wall / 60:.1f} min)")
