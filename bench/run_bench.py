@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """make bench: runs the throughput benchmarks and appends their figures to bench/RESULTS.md.
 
-Prints the machine (cores, CPU model, load average), the compiler, the commit, then the lines
-of bench_moisture (moisture node-steps per second) and bench_mechanics (element-steps per
-second of the 200k-triangle cracking rectangle and of the Peron mesh, at 1 thread and at all
-threads), and appends all of it to RESULTS.md as a dated section with the command that made
+Prints the machine (cores, CPU model, load average), the compiler, the commit, the memory
+bandwidth (bench_memory: the STREAM triad at 1 thread and at all threads, the ceiling of a step
+on a mesh larger than the cache), then the lines of bench_moisture (moisture node-steps per
+second) and bench_mechanics (element-steps per second of the 200k-triangle cracking rectangle
+and of the Peron mesh, at 1 thread and at all threads), and appends all of it to RESULTS.md as a dated section with the command that made
 it. The Peron end-to-end figures (wall time, steps) come from a full run's summary.json: one
 made before (--peron-run DIR), or one this script makes first (--peron: 8-9 minutes on 2 cores).
 
@@ -97,6 +98,7 @@ def main():
         print(f"running inputs/peron/peron.toml into {peron_run} (8-9 minutes on 2 cores)", flush=True)
         if ydry_case.run_ydry(args.build / "ydry", REPO / "inputs/peron/peron.toml", peron_run) is None:
             sys.exit("run_bench.py: the Peron run failed")
+    lines += run_bench(args.build / "bench" / "bench_memory")
     lines += run_bench(args.build / "bench" / "bench_moisture")
     lines += run_bench(args.build / "bench" / "bench_mechanics")
     if peron_run:
