@@ -63,7 +63,7 @@ sweeps: build
 # The Peron figures' robustness (issue 5; verification/peron/README.md "Robustness"): the
 # shipped deck, three heterogeneity seeds, the relaxation cap doubled and the element size
 # halved (its mesh made by gmsh), JOBS at a time, then the verdicts against the shipped run.
-# About 14 hours of one core; run it again after an interruption: runs go on from their
+# About 3 hours of one core (80 minutes on two); run it again after an interruption: runs go on from their
 # checkpoints.
 inputs/peron/peron_fine.msh: inputs/peron/peron.geo
 	gmsh -2 -format msh41 -setnumber h 0.00075 -o $@ $< > $@.log
