@@ -323,12 +323,14 @@ TEST_CASE("the node integration moves the free components alone, with the same b
     n.constraint[i] = std::uint8_t(i % 5 == 1 ? kFixX : i % 5 == 3 ? kFixY : 0);
   }
   const VelocityUpdate update{0.9, 1e-4, 0.99, 1e-3};
-  integrate_node_range(s, 0, n.size(), update);
+  PowerLanes power;
+  integrate_node_range(s, 0, n.size(), update, power);
   const double vx = (0.9 * 3e-3 + (1e-3 + 1e-4) * 0.3 / 0.7) * 0.99;
   const double vy = (0.9 * -7e-3 + (1e-3 + 1e-4) * 1.1 / 0.7) * 0.99;
-  std::size_t wrong = 0;
+  std::size_t wrong = 0, free_xs = 0, free_ys = 0;
   for (std::size_t i = 0; i < n.size(); ++i) {
     const bool free_x = n.constraint[i] != kFixX, free_y = n.constraint[i] != kFixY;
+    free_xs += free_x, free_ys += free_y;
     wrong += !ydry_test::same_bits({n.vx[i], n.x[i]}, {n.vx[0], n.x[0]}) && free_x;
     wrong += !ydry_test::same_bits({n.vy[i], n.y[i]}, {n.vy[0], n.y[0]}) && free_y;
     wrong += !free_x && (n.vx[i] != 3e-3 || n.x[i] != 0.1);
@@ -339,6 +341,9 @@ TEST_CASE("the node integration moves the free components alone, with the same b
   CHECK(n.x[0] == Approx(0.1 + vx * 1e-3).epsilon(1e-14));
   CHECK(n.vy[0] == Approx(vy).epsilon(1e-14));
   CHECK(n.y[0] == Approx(0.1 + vy * 1e-3).epsilon(1e-14));
+  // The damping's v_new . f over the moved components, each f the force that moved it; a sum
+  // of some hundred terms of two values: round-off only.
+  CHECK(power.total() == Approx(double(free_xs) * vx * 0.3 + double(free_ys) * vy * 1.1).epsilon(1e-13));
 }
 
 TEST_CASE("nodes moved in the element kernel's pass take the bits of nodes moved before it", "[mechanics][threads]") {
@@ -355,7 +360,8 @@ TEST_CASE("nodes moved in the element kernel's pass take the bits of nodes moved
   }
   const VelocityUpdate update{0.9, 1e-7, 1.0, 5e-7};
   State expected = moved;
-  integrate_node_range(expected, 0, expected.nodes.size(), update);
+  PowerLanes expected_power;
+  integrate_node_range(expected, 0, expected.nodes.size(), update, expected_power);
   element_forces(expected);
   const auto positions_and_forces = [](const State& s) {
     std::vector<double> out;
@@ -365,12 +371,19 @@ TEST_CASE("nodes moved in the element kernel's pass take the bits of nodes moved
   };
   REQUIRE(std::count(start.nodes.constraint.begin(), start.nodes.constraint.end(), kFixX | kFixY) > 0);
   CHECK_FALSE(ydry_test::same_bits(positions_and_forces(expected), positions_and_forces(moved)));
+  // The pass's v_new . f sums the same terms per ownership slot, then over the slots: equal
+  // to the sum in node order to round-off, and the same bits on any number of threads.
+  std::vector<double> power;
   ydry_test::on_1_and_2_threads([&](int threads) {
     INFO(threads << " thread(s)");
     State s = moved;
-    element_forces(s, &update);
+    power.push_back(element_forces(s, &update));
     CHECK(ydry_test::same_bits(positions_and_forces(s), positions_and_forces(expected)));
   });
+  REQUIRE(power.size() == 2);
+  CHECK(ydry_test::same_bits({power[1]}, {power[0]}));
+  CHECK(power[0] == Approx(expected_power.total()).epsilon(1e-12));
+  CHECK(power[0] != 0.0);
 }
 
 TEST_CASE("element and joint forces conserve linear and angular momentum, broken or not", "[mechanics]") {

@@ -96,20 +96,45 @@ void for_each_material_run(const State& s, Body body) {
   }
 }
 
+// Moves the nodes of triangles [first, last), adding each one's v_new . f to the lanes of its
+// ownership slot (slot_begin: the table's triangle_begin; one slot without one).
+void integrate_triangles(State& s, std::size_t first, std::size_t last, const VelocityUpdate& update,
+                         const std::vector<std::size_t>& slot_begin, std::vector<PowerLanes>& slot_lanes) {
+  if (slot_lanes.size() == 1) {
+    integrate_node_range(s, 3 * first, 3 * last, update, slot_lanes[0]);
+    return;
+  }
+  std::size_t k = std::size_t(std::upper_bound(slot_begin.begin(), slot_begin.end(), first) - slot_begin.begin()) - 1;
+  for (std::size_t a = first; a < last; a = std::min(last, slot_begin[++k])) {
+    const std::size_t b = std::min(last, slot_begin[k + 1]);
+    integrate_node_range(s, 3 * a, 3 * b, update, slot_lanes[k]);
+  }
+}
+
 }  // namespace
 
-void element_forces(State& s, const VelocityUpdate* move_first) {
+double element_forces(State& s, const VelocityUpdate* move_first) {
   Nodes& n = s.nodes;
   Triangles& tri = s.triangles;
   const double thickness = s.mechanics.thickness_m;
   const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
-#pragma omp parallel if (tri.size() > parallel_minimum)
+  // The integration's v_new . f per ownership slot, each summed in node order whatever cut
+  // the team makes (PowerLanes), then over the slots in theirs: the same sum on any number of
+  // threads. Without an ownership table the whole mesh is one slot, on one thread. Reused by
+  // the calling thread, so a step allocates nothing; bound to a reference so that the team
+  // writes the caller's buffer.
+  const std::vector<std::size_t>& slot_begin = s.ownership.triangle_begin;
+  const bool slots = slot_begin.size() >= 2 && slot_begin.back() == tri.size();
+  thread_local std::vector<PowerLanes> buffer;
+  buffer.assign(slots ? slot_begin.size() - 1 : 1, PowerLanes{});
+  std::vector<PowerLanes>& slot_lanes = buffer;
+#pragma omp parallel if (tri.size() > parallel_minimum && slots)
   for_each_material_run(s, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
     for (std::size_t first = begin, last; first < end; first = last) {
       last = std::min(end, first + kMovedTogether);
       // A rigid material's nodes are fixed: the integration would keep every value (a third
       // of the Peron deck's nodes).
-      if (move_first && !m.rigid) integrate_node_range(s, 3 * first, 3 * last, *move_first);
+      if (move_first && !m.rigid) integrate_triangles(s, first, last, *move_first, slot_begin, slot_lanes);
       if (m.mechanical) {
         material_run_forces(first, last, n.x.data(), n.y.data(), tri.inv0.data(), tri.area0.data(),
                             tri.mass_kg.data(), tri.shrinkage_strain.data(), n.fx.data(), n.fy.data(), m, thickness,
@@ -120,6 +145,9 @@ void element_forces(State& s, const VelocityUpdate* move_first) {
       }
     }
   });
+  double power = 0.0;
+  for (const PowerLanes& lanes : slot_lanes) power += lanes.total();
+  return power;
 }
 
 void element_stresses(State& s) {

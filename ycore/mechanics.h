@@ -43,8 +43,9 @@ Ownership partition_for_threads(const State& state, std::size_t slots);
 
 // Element internal forces and gravity: overwrites fx, fy of every node (each triangle owns
 // its three nodes). With move_first, each triangle's nodes are first moved by that pseudo-step
-// (integrate_node_range), in the same pass.
-void element_forces(State& state, const VelocityUpdate* move_first = nullptr);
+// (integrate_node_range), in the same pass, and the return is the moved components' sum of
+// v_new . f with the forces that moved them (0 without), the same on any number of threads.
+double element_forces(State& state, const VelocityUpdate* move_first = nullptr);
 
 // The element stress (Triangles::sxx, syy, sxy) at the current positions. The forces do not
 // need it: relaxations make it once, at the equilibrium reached.

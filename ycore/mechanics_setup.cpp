@@ -219,7 +219,7 @@ void init_mechanics(State& s, const Deck& deck) {
   mech.gravity_x = deck.gravity[0];
   mech.gravity_y = deck.gravity[1];
   const std::size_t nn = s.nodes.size();
-  for (auto* v : {&s.nodes.fx, &s.nodes.fy, &mech.x_start, &mech.y_start, &mech.fx_previous, &mech.fy_previous})
+  for (auto* v : {&s.nodes.fx, &s.nodes.fy, &mech.x_start, &mech.y_start})
     v->assign(nn, 0.0);
   set_reference_geometry(s);
   set_joint_data(s, deck);

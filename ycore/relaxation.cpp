@@ -43,7 +43,8 @@ namespace {
 struct ForceMeasures {
   double net2 = 0;       // |net force|^2 over free components
   double reference2 = 0; // |element forces and gravity|^2 over all nodes
-  double rayleigh_numerator = 0; // -v.(f - f_previous) over free components
+  double rayleigh_numerator = 0; // -v.(f - f_previous) over free components, v the last step's
+                                 // velocity and f_previous the force that made it
   double twice_kinetic = 0;      // v.M v over free components
   double power = 0;              // f.v over free components
   double force2_over_mass = 0;   // f.M^-1 f over free components
@@ -51,10 +52,10 @@ struct ForceMeasures {
 };
 
 // Adds the joint and contact forces to the node forces (through each node's joint slots and
-// contact gather list) and measures.
+// contact gather list) and measures; the Rayleigh numerator's -v.f only (compute_forces adds
+// v.f_previous).
 ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
   Nodes& n = s.nodes;
-  Mechanics& mech = s.mechanics;
   const std::vector<double>& jf = s.joints.force;
   const Contact& c = s.contact;
   const bool contact = !c.gather_offset.empty();
@@ -74,31 +75,33 @@ ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
       }
     n.fx[i] = fx;
     n.fy[i] = fy;
-    const auto measure = [&](double f, double u, double f_previous) {
+    const auto measure = [&](double f, double u) {
       sum[0] += f * f;
-      sum[2] -= u * (f - f_previous);
+      sum[2] -= u * f;
       sum[3] += n.m[i] * u * u;
       if (fire_measures) {  // a division per component: only where FIRE reads them
         sum[4] += f * u;
         sum[5] += f * f / n.m[i];
       }
     };
-    if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i], mech.fx_previous[i]);
-    if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i], mech.fy_previous[i]);
-    mech.fx_previous[i] = fx;
-    mech.fy_previous[i] = fy;
+    if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i]);
+    if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i]);
   }, s.ownership.node_begin);
   return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
 }
 
 // FIRE's measures (power, f.M^-1 f) only with fire_measures. With move_first, the nodes are
-// first moved by that pseudo-step (in the element kernel's pass).
+// first moved by that pseudo-step (in the element kernel's pass), which sums v.f_previous of
+// the Rayleigh numerator where it reads f_previous: so no node keeps its force of the step
+// before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md, session 25).
 ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
                              const VelocityUpdate* move_first = nullptr) {
-  element_forces(s, move_first);
+  const double power_before = element_forces(s, move_first);
   joint_forces(s, dt);
   contact_forces(s, dt, friction);
-  return gather_interaction_forces(s, fire_measures);
+  ForceMeasures measures = gather_interaction_forces(s, fire_measures);
+  measures.rayleigh_numerator += power_before;
+  return measures;
 }
 
 // Central differences with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)); c = 0:
@@ -278,8 +281,6 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   // start by kicking every node along f / m at a tenth of the jump's speed, and the stiff
   // joints' vibration would book work the law does not (the gf_I test shows it).
   measures.power = measures.twice_kinetic = measures.rayleigh_numerator = 0.0;
-  mech.fx_previous = n.fx;
-  mech.fy_previous = n.fy;
 
   RelaxationResult result;
   const auto balanced = [&](const ForceMeasures& m) {

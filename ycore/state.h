@@ -178,7 +178,6 @@ struct Mechanics {
   std::vector<index_t> driven_node;
   std::vector<double> driven_vx, driven_vy;
   std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
-  std::vector<double> fx_previous, fy_previous;  // [nodes] forces one step ago
   double step_s = 0;                      // pseudo-time step of the explicit integration
   double unrelaxed_s = 0;                 // moisture time since the last relaxation
   double roundoff_net2 = 0;               // N^2: |net force|^2 that round-off alone makes
