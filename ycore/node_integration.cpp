@@ -10,6 +10,9 @@
 namespace ydry {
 namespace {
 
+// Nodes integrated at a time: the terms of the sum stay in the L1 cache.
+constexpr std::size_t kMostNodesIntegrated = 2048;
+
 // power[i - begin]: the free components' v_new . f of node i.
 YDRY_AVX2_CLONE void integrate_range(std::size_t begin, std::size_t end, const std::uint8_t* __restrict constraint,
                                      const double* __restrict m, const double* __restrict fx,

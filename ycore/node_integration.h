@@ -19,9 +19,6 @@ struct PowerLanes {
   double total() const { return (lane[0] + lane[1]) + (lane[2] + lane[3]); }
 };
 
-// Nodes integrated at a time: the terms of the sum stay in the L1 cache.
-constexpr std::size_t kMostNodesIntegrated = 2048;
-
 // Moves every component of nodes [begin, end) that is not prescribed (Nodes::constraint); the
 // others keep their velocity and position. Adds to `power` each moved component's new velocity
 // times the force that made it, v_new . f: the adaptive damping's Rayleigh quotient needs it
