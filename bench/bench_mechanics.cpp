@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "ycore/checkpoint_file.h"
 #include "ycore/deck.h"
 #include "ycore/mechanics.h"
 #include "ycore/run.h"
@@ -53,6 +54,19 @@ std::size_t damaged_joints(const ydry::State& s) {
     count += !s.joints.broken[j] && (s.joints.damage[3 * j] > 0.0 || s.joints.damage[3 * j + 1] > 0.0 ||
                                      s.joints.damage[3 * j + 2] > 0.0);
   return count;
+}
+
+// FNV-1a-64 of what a run moves: positions, velocities, damage, breakage and moisture. Printed
+// so that two builds' runs can be told the same bits or not (a change meant to keep the
+// results must keep it).
+std::uint64_t state_hash(const ydry::State& s) {
+  std::uint64_t hash = ydry::fnv1a64(nullptr, 0);
+  const auto add = [&](const auto& v) {
+    hash = ydry::fnv1a64(reinterpret_cast<const char*>(v.data()), v.size() * sizeof v[0], hash);
+  };
+  add(s.nodes.x), add(s.nodes.y), add(s.nodes.vx), add(s.nodes.vy);
+  add(s.joints.damage), add(s.joints.broken), add(s.moisture.w);
+  return hash;
 }
 
 std::size_t deformable_triangles(const ydry::State& s) {
@@ -124,10 +138,11 @@ int bench(const Case& c) {
               damaged_joints(start), start.contact.pair_node.size());
   const Timed one = time_relaxations(start, deck, 1, c.min_steps);
   const Timed all = time_relaxations(start, deck, max_threads, c.min_steps);
-  std::printf("mechanics %s: %llu steps to t = %g s (%zu joints broken, %zu damaged, %zu contact pairs): %.2f "
-              "s at 1 thread, %.2f s at %d threads (on %.2f cores)\n",
+  std::printf("mechanics %s: %llu steps to t = %g s (%zu joints broken, %zu damaged, %zu contact pairs; state hash "
+              "%016llx): %.2f s at 1 thread, %.2f s at %d threads (on %.2f cores)\n",
               c.name, static_cast<unsigned long long>(one.steps), one.end.time_s, broken_joints(one.end),
-              damaged_joints(one.end), one.end.contact.pair_node.size(), one.seconds, all.seconds, max_threads, all.cores);
+              damaged_joints(one.end), one.end.contact.pair_node.size(),
+              static_cast<unsigned long long>(state_hash(one.end)), one.seconds, all.seconds, max_threads, all.cores);
   const double rate_one = double(triangles) * one.steps / one.seconds;
   const double rate_all = double(triangles) * all.steps / all.seconds;
   std::printf("mechanics %s: element-steps/s: %.3g at 1 thread, %.3g at %d threads (speed-up %.2f)\n", c.name,
