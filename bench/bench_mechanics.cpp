@@ -23,6 +23,7 @@
 #include "ycore/deck.h"
 #include "ycore/mechanics.h"
 #include "ycore/run.h"
+#include "ycore/stage_timing.h"
 
 namespace {
 
@@ -92,6 +93,7 @@ struct Timed {
 Timed time_relaxations(const ydry::State& start, const ydry::Deck& deck, int threads, std::uint64_t min_steps) {
   omp_set_num_threads(threads);
   Timed t{0, 0, 0, start};
+  t.end.wall = {};
   double step_limit = ydry::coupling_step_limit(t.end, deck);
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
@@ -143,6 +145,9 @@ int bench(const Case& c) {
               c.name, static_cast<unsigned long long>(one.steps), one.end.time_s, broken_joints(one.end),
               damaged_joints(one.end), one.end.contact.pair_node.size(),
               static_cast<unsigned long long>(state_hash(one.end)), one.seconds, all.seconds, max_threads, all.cores);
+  for (const Timed* t : {&one, &all})
+    std::printf("mechanics %s: at %d thread(s), %s\n", c.name, t == &one ? 1 : max_threads,
+                ydry::wall_by_stage_text(t->end.wall, t->seconds).c_str());
   const double rate_one = double(triangles) * one.steps / one.seconds;
   const double rate_all = double(triangles) * all.steps / all.seconds;
   std::printf("mechanics %s: element-steps/s: %.3g at 1 thread, %.3g at %d threads (speed-up %.2f)\n", c.name,

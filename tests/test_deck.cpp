@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <map>
+#include <regex>
+#include <string>
 #include <toml++/toml.h>
 
 #include "tests/test_support.h"
@@ -61,6 +64,58 @@ TEST_CASE("a good deck runs and writes every output", "[deck]") {
     CHECK(std::filesystem::exists(dir.file("out/") + f));
   CHECK(ydry_test::read_text(dir.file("out/summary.json")).find("\"completed\": true") != std::string::npos);
   CHECK(r.output.find("warning") == std::string::npos);
+}
+
+namespace {
+
+// summary.json's "wall_NAME_s" entries, by NAME, and its "wall_s" under "".
+std::map<std::string, double> wall_entries(const std::string& summary) {
+  static const std::regex entry(R"re("wall(?:_([a-z]+))?_s": ([^,\n]+))re");
+  std::map<std::string, double> wall;
+  for (auto m = std::sregex_iterator(summary.begin(), summary.end(), entry); m != std::sregex_iterator(); ++m)
+    wall[(*m)[1].str()] = std::stod((*m)[2].str());
+  return wall;
+}
+
+// The split of the wall time a run writes: every stage of StageSeconds and "other", none
+// negative, summing to wall_s (to the 17 digits summary.json prints); the log's last lines
+// carry it too.
+std::map<std::string, double> checked_wall_split(const ydry_test::TempDir& dir, const std::string& run) {
+  std::map<std::string, double> wall = wall_entries(ydry_test::read_text(dir.file(run + "/summary.json")));
+  REQUIRE(wall.size() == 8);
+  double sum = 0.0;
+  for (const char* stage : {"moisture", "elements", "joints", "contact", "gather", "cracking", "other"}) {
+    INFO(stage);
+    REQUIRE(wall.count(stage) == 1);
+    CHECK(wall[stage] >= 0.0);
+    sum += wall[stage];
+  }
+  CHECK(sum == Approx(wall[""]).epsilon(1e-12));
+  CHECK(ydry_test::read_text(dir.file(run + "/log.txt")).find("wall time by stage: moisture ") != std::string::npos);
+  return wall;
+}
+
+}  // namespace
+
+TEST_CASE("a run splits its wall time by stage: the stages sum to wall_s, and a run books time only to the stages it has",
+          "[deck]") {
+  ydry_test::TempDir dir;
+  REQUIRE(run_edited(dir, "", "").exit_code == 0);  // moisture only
+  std::map<std::string, double> wall = checked_wall_split(dir, "out");
+  CHECK(wall["moisture"] > 0.0);
+  for (const char* stage : {"elements", "joints", "contact", "gather", "cracking"}) {
+    INFO(stage);
+    CHECK(wall[stage] == 0.0);
+  }
+  // The cracking strip of the sweep tests to its first two cracks (3 s of CPU).
+  const ydry_test::CommandResult cracking = run_ydry(std::string(YDRY_SOURCE_DIR "/tests/data/sweep_strip.toml") + " -o " +
+                                                      dir.file("strip") + " --quiet --set run.end_time=1000");
+  REQUIRE(cracking.exit_code == 0);
+  wall = checked_wall_split(dir, "strip");
+  for (const char* stage : {"moisture", "elements", "joints", "contact", "gather", "cracking"}) {
+    INFO(stage);
+    CHECK(wall[stage] > 0.0);
+  }
 }
 
 TEST_CASE("a material the mesh does not use is reported, not silently ignored", "[deck]") {

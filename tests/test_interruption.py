@@ -14,7 +14,7 @@ and a frame every 500 s: 216 coupling steps, 5 broken joints) runs once uninterr
   finally completes ends in the uninterrupted run's files.
 
 "The uninterrupted run's files": every file of it is there with the same bytes, but log.txt
-(each process logs its own lines and wall times) and summary.json's wall_s; anything else is a
+(each process logs its own lines and wall times) and summary.json's wall_s and its split by stage; anything else is a
 checkpoint. Exits 1 on any failure.
 """
 import argparse
@@ -118,7 +118,7 @@ def same_outputs(reference, outdir):
     problems += [f"{outdir / f}: missing" for f in sorted(ours - theirs)]
     problems += [f"{outdir / f}: not the uninterrupted run's" for f in sorted(theirs - ours)
                  if f.parent != Path("checkpoints") or f.suffix != ".chk"]
-    wall = re.compile(rb'"wall_s": [^,\n]+')
+    wall = re.compile(rb'"wall(_[a-z]+)?_s": [^,\n]+')
     for f in sorted(ours & theirs):
         if f.name == "log.txt":
             continue

@@ -95,7 +95,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 std::string without_run_facts(const std::string& text) {
-  static const std::regex facts(R"("threads": \d+|"wall_s": [^,\n]+|\d+ threads|wall [^ ,\n]+ s)");
+  static const std::regex facts(R"("threads": \d+|"wall(_[a-z]+)?_s": [^,\n]+|\d+ threads|wall [^ ,\n]+ s|wall time by stage: [^\n]*)");
   return std::regex_replace(text, facts, "<run fact>");
 }
 

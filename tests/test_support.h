@@ -54,7 +54,7 @@ Snapshot state_snapshot(const ydry::State& state);
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b);
 
 // A file's text without the facts a run states about its execution: the thread count and the
-// wall time (summary.json's "threads" and "wall_s", and the log's prose).
+// wall time (summary.json's "threads", "wall_s" and its split by stage, and the log's prose).
 std::string without_run_facts(const std::string& text);
 // Whether two files hold the same bytes but for the run facts.
 bool same_but_run_facts(const std::filesystem::path& a, const std::filesystem::path& b);

@@ -36,6 +36,7 @@
 #include "ycore/joint_law.h"
 #include "ycore/mechanics.h"
 #include "ycore/numerical_failure.h"
+#include "ycore/stage_timing.h"
 
 namespace ydry {
 namespace {
@@ -96,10 +97,15 @@ ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
 // before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md, session 25).
 ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
                              const VelocityUpdate* move_first = nullptr) {
+  StageClock clock;
   const double power_before = element_forces(s, move_first);
+  clock.lap(s.wall.elements);
   joint_forces(s, dt);
+  clock.lap(s.wall.joints);
   contact_forces(s, dt, friction);
+  clock.lap(s.wall.contact);
   ForceMeasures measures = gather_interaction_forces(s, fire_measures);
+  clock.lap(s.wall.gather);
   measures.rayleigh_numerator += power_before;
   return measures;
 }

@@ -17,6 +17,7 @@
 #include "ycore/input_error.h"
 #include "ycore/output_files.h"
 #include "ycore/progress.h"
+#include "ycore/stage_timing.h"
 #include "ycore/strength_heterogeneity.h"
 #include "ycore/vtk_output.h"
 #include "ycore/contact.h"
@@ -114,6 +115,7 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   for (std::size_t c = 0; c < kSeriesColumns.size(); ++c) j.number(kSeriesColumns[c], series.rows.back()[c]);
   j.integer("threads", omp_get_max_threads());
   j.number("wall_s", wall_s);
+  for (const auto& [name, seconds] : wall_by_stage(s.wall, wall_s)) j.number("wall_" + name + "_s", seconds);
   j.integer("elements", static_cast<long long>(s.triangles.size()));
   j.integer("joints", static_cast<long long>(s.joints.size()));
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
@@ -263,19 +265,25 @@ double coupling_step_limit(const State& s, const Deck& deck) {
 }
 
 bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
+  StageClock clock;
   if (any_moisture(s)) moisture_step(s, dt);
+  clock.lap(s.wall.moisture);
   if (!deck.mechanics) return false;
   s.mechanics.unrelaxed_s += dt;
   if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
   update_shrinkage_strain(s);
+  clock.lap(s.wall.moisture);
+  // The solid's force passes book their own stages (compute_forces).
   if (deck.dynamic)
     move_dynamically(s, s.mechanics.unrelaxed_s);
   else
     relax(s, relaxation_controls(deck), s.mechanics.unrelaxed_s);
   s.mechanics.unrelaxed_s = 0.0;
-  if (commit_joint_damage(s) == 0) return false;
-  split_across_broken_joints(s, deck);
-  return any_moisture(s);
+  StageClock cracking;
+  const bool broke = commit_joint_damage(s) > 0;
+  if (broke) split_across_broken_joints(s, deck);
+  cracking.lap(s.wall.cracking);
+  return broke && any_moisture(s);
 }
 
 double advance_to(State& s, const Deck& deck, double until_s, double max_step_s, const std::function<bool()>& pause) {
@@ -460,6 +468,7 @@ int run(const RunOptions& opt) {
          << "), external work " << e.external_work_J << ", gravity work " << e.gravity_work_J << ", kinetic "
          << e.kinetic_J << "\n";
   }
+  tail << wall_by_stage_text(state.wall, progress.wall_s()) << "\n";
   tail
        << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, "
        << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << (surface ? "surface.csv, " : "")

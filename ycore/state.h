@@ -15,6 +15,7 @@
 
 #include "ycore/mesh_input.h"
 #include "ycore/ownership.h"
+#include "ycore/stage_timing.h"
 
 namespace ydry {
 
@@ -205,6 +206,7 @@ struct State {
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
   double time_s = 0;
   std::uint64_t moisture_steps = 0;
+  StageSeconds wall;  // this process's wall time by stage (not part of the physics)
 };
 
 }  // namespace ydry
