@@ -1,7 +1,7 @@
 // Issue 8, item 1: checkpoints and restart. A state restored from a checkpoint is the state it
 // was written from, array by array, and goes on the same; a restart from any checkpoint ends in
 // the files of the uninterrupted run, byte for byte, but for what honestly differs (log.txt,
-// summary.json's wall_s); damaged, truncated, foreign or mismatched checkpoints are refused
+// summary.json's wall_s and its split by stage); damaged, truncated, foreign or mismatched checkpoints are refused
 // with a message that says what is wrong (exit 2), and no bytes make the reader or the restore
 // crash.
 #include <catch2/catch.hpp>
@@ -43,7 +43,8 @@ void check_same_bits(const Snapshot& expected, const Snapshot& actual) {
 
 // The files of `reference` are in `folder` with the same bytes, but for what a restart
 // honestly changes: log.txt (the log of each process that worked on the run, with its folder
-// and wall times) and summary.json's wall_s (the wall time of the process that wrote it).
+// and wall times) and summary.json's wall_s and its split by stage (the wall time of the
+// process that wrote it).
 // Anything else in `folder` is a checkpoint, the same as in `checkpoints`.
 void check_same_outputs(const fs::path& reference, const fs::path& folder, const fs::path& checkpoints) {
   const std::vector<std::string> expected = files_under(reference), written = files_under(folder);

@@ -107,7 +107,8 @@ TEST_CASE("a run splits its wall time by stage: the stages sum to wall_s, and a 
     INFO(stage);
     CHECK(wall[stage] == 0.0);
   }
-  // The cracking strip of the sweep tests to its first two cracks (3 s of CPU).
+  // The cracking strip of the sweep tests to its first two cracks (3 s of CPU): every stage of
+  // a mechanics run has booked time (a stage whose lap were lost would read 0).
   const ydry_test::CommandResult cracking = run_ydry(std::string(YDRY_SOURCE_DIR "/tests/data/sweep_strip.toml") + " -o " +
                                                       dir.file("strip") + " --quiet --set run.end_time=1000");
   REQUIRE(cracking.exit_code == 0);

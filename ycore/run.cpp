@@ -456,10 +456,11 @@ int run(const RunOptions& opt) {
   const std::string final_checkpoint = write_checkpoint();
   progress.finish(state.time_s, state.moisture_steps);
 
+  const double wall_s = progress.wall_s();
   std::ostringstream tail;
   tail << "done: t = " << state.time_s << " s, " << state.moisture_steps << " moisture steps, "
        << "mean moisture " << mean_moisture(state) << ", water balance error "
-       << water_balance_error(state) << ", wall " << progress.wall_s() << " s\n";
+       << water_balance_error(state) << ", wall " << wall_s << " s\n";
   if (deck.mechanics) {
     const Energies e = energies(state);
     tail << "solid: " << state.mechanics.steps << " mechanical steps, "
@@ -468,7 +469,7 @@ int run(const RunOptions& opt) {
          << "), external work " << e.external_work_J << ", gravity work " << e.gravity_work_J << ", kinetic "
          << e.kinetic_J << "\n";
   }
-  tail << wall_by_stage_text(state.wall, progress.wall_s()) << "\n";
+  tail << wall_by_stage_text(state.wall, wall_s) << "\n";
   tail
        << "outputs: " << outdir << "/" << deck.name << ".pvd, series.csv, "
        << (deck.mechanics ? "cracks.csv, reactions.csv, " : "") << (surface ? "surface.csv, " : "")

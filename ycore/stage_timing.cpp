@@ -1,7 +1,5 @@
 #include "ycore/stage_timing.h"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
@@ -25,12 +23,12 @@ std::string wall_by_stage_text(const StageSeconds& w, double wall_s) {
   return text.str();
 }
 
-StageClock::StageClock() : last_s_(omp_get_wtime()) {}
+StageClock::StageClock() : last_(std::chrono::steady_clock::now()) {}
 
 void StageClock::lap(double& stage_s) {
-  const double now = omp_get_wtime();
-  stage_s += now - last_s_;
-  last_s_ = now;
+  const auto now = std::chrono::steady_clock::now();
+  stage_s += std::chrono::duration<double>(now - last_).count();
+  last_ = now;
 }
 
 }  // namespace ydry

@@ -5,6 +5,7 @@
 // its wall_s does).
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,22 +22,23 @@ struct StageSeconds {
   double total() const { return moisture + elements + joints + contact + gather + cracking; }
 };
 
-// The stages by name, then "other": the rest of wall_s (set-up, output, checkpoints, the
-// relaxations' own bookkeeping).
+// The stages by name, then "other": the rest of wall_s (the set-up but for its initial
+// equilibrium's force passes, output, checkpoints, the relaxations' own bookkeeping).
 std::vector<std::pair<std::string, double>> wall_by_stage(const StageSeconds& stages, double wall_s);
 
 // "wall time by stage: moisture 1.23 s (3.4 %), elements ...": the end of log.txt.
 std::string wall_by_stage_text(const StageSeconds& stages, double wall_s);
 
 // Laps of the wall clock: lap(stage) adds the time since the last lap (or since the clock was
-// made) to that stage.
+// made) to that stage. The clock is the one wall_s is read from (Progress), so the stages
+// fall within it.
 class StageClock {
  public:
   StageClock();
   void lap(double& stage_s);
 
  private:
-  double last_s_;
+  std::chrono::steady_clock::time_point last_;
 };
 
 }  // namespace ydry
