@@ -62,11 +62,10 @@ std::size_t damaged_joints(const ydry::State& s) {
 // results must keep it).
 std::uint64_t state_hash(const ydry::State& s) {
   std::uint64_t hash = ydry::fnv1a64(nullptr, 0);
-  const auto add = [&](const auto& v) {
-    hash = ydry::fnv1a64(reinterpret_cast<const char*>(v.data()), v.size() * sizeof v[0], hash);
-  };
-  add(s.nodes.x), add(s.nodes.y), add(s.nodes.vx), add(s.nodes.vy);
-  add(s.joints.damage), add(s.joints.broken), add(s.moisture.w);
+  for (const std::vector<double>* v : {&s.nodes.x, &s.nodes.y, &s.nodes.vx, &s.nodes.vy, &s.joints.damage})
+    ydry::hash_array(hash, *v);
+  ydry::hash_array(hash, s.joints.broken);
+  ydry::hash_array(hash, s.moisture.w);
   return hash;
 }
 

@@ -74,11 +74,6 @@ void for_each_record_field(R& r, Field&& field) {
   field("record.frame_times", r.frame_times);
 }
 
-template <class T>
-void hash_array(std::uint64_t& hash, const std::vector<T>& v) {
-  hash = fnv1a64(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T), hash);
-}
-
 void require_finite(const Checkpoint& c, const std::vector<double>& v, const char* name) {
   for (std::size_t i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))

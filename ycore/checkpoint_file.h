@@ -32,6 +32,11 @@ constexpr std::uint32_t kCheckpointFormat = 1;
 // FNV-1a, 64 bits, of `bytes`, continuing from `hash`.
 std::uint64_t fnv1a64(const char* bytes, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ull);
 inline std::uint64_t fnv1a64(const std::string& bytes) { return fnv1a64(bytes.data(), bytes.size()); }
+// Adds the bytes of an array's elements to `hash`.
+template <class T>
+void hash_array(std::uint64_t& hash, const std::vector<T>& v) {
+  hash = fnv1a64(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T), hash);
+}
 
 // Element types of a field.
 enum class FieldType : std::uint8_t { f64 = 1, u64 = 2, u32 = 3, u8 = 4 };
