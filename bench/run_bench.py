@@ -5,9 +5,10 @@ Prints the machine (cores, CPU model, load average), the compiler, the commit, t
 bandwidth (bench_memory: the STREAM triad at 1 thread and at all threads, the ceiling of a step
 on a mesh larger than the cache), then the lines of bench_moisture (moisture node-steps per
 second) and bench_mechanics (element-steps per second of the 200k-triangle cracking rectangle
-and of the Peron mesh, at 1 thread and at all threads), and appends all of it to RESULTS.md as a dated section with the command that made
-it. The Peron end-to-end figures (wall time, steps) come from a full run's summary.json: one
-made before (--peron-run DIR), or one this script makes first (--peron: 8-9 minutes on 2 cores).
+and of the Peron mesh, at 1 thread and at all threads, with their wall time by stage), and
+appends all of it to RESULTS.md as a dated section with the command that made it. The Peron
+end-to-end figures (wall time, steps) come from a full run's summary.json: one made before
+(--peron-run DIR), or one this script makes first (--peron: 7-9 minutes on 2 cores).
 
 examples:
   bench/run_bench.py                           # what `make bench` runs
