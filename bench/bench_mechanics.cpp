@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "ycore/checkpoint_file.h"
-#include "ycore/deck.h"
-#include "ycore/mechanics.h"
-#include "ycore/run.h"
-#include "ycore/stage_timing.h"
+#include "ycore/output/checkpoint_file.h"
+#include "ycore/input/deck.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/driver/run.h"
+#include "ycore/state/stage_timing.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "ycore/deck.h"
-#include "ycore/run.h"
+#include "ycore/input/deck.h"
+#include "ycore/driver/run.h"
 #include "ymoist/moisture.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <random>
 
 #include "tests/test_support.h"
-#include "ycore/checkpoint.h"
-#include "ycore/run.h"
+#include "ycore/output/checkpoint.h"
+#include "ycore/driver/run.h"
 
 using namespace ydry;
 using namespace ydry_test;

@@ -8,10 +8,10 @@
 #include <random>
 
 #include "tests/test_support.h"
-#include "ycore/contact.h"
-#include "ycore/contact_geometry.h"
-#include "ycore/mechanics.h"
-#include "ycore/run.h"
+#include "ycore/contact/contact.h"
+#include "ycore/contact/contact_geometry.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/driver/run.h"
 #include "ycrack/node_sharing.h"
 
 using namespace ydry;
@@ -246,7 +246,7 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
   CHECK(work[0] > 0.0);  // the contacts did carry the block
 }
 
-// The ratchet of an extrapolated start (ycore/relaxation.cpp, predict_equilibrium): the block
+// The ratchet of an extrapolated start (ycore/solid/relaxation.cpp, predict_equilibrium): the block
 // at rest on its base is given a last motion of 0.1 mm to the right, which the relaxation
 // extrapolates, so it starts 0.1 mm away with every contact slipped. Nothing drives it
 // there: the friction, which slides only at equilibrium, pulls it back to where it rested.
@@ -269,7 +269,7 @@ TEST_CASE("a block carried off its rest by the extrapolated start is pulled back
   }
 }
 
-// A falling motion is not extrapolated past the contact buffer (ycore/relaxation.cpp,
+// A falling motion is not extrapolated past the contact buffer (ycore/solid/relaxation.cpp,
 // predict_equilibrium): the block at rest on its base is given a last motion of 0.2 m down,
 // four times the base's depth. Extrapolated whole, the jump would put the block below the
 // base, which no contact would then hold, and it would fall on; limited to the buffer, it

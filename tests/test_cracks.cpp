@@ -16,8 +16,8 @@
 #include <utility>
 
 #include "tests/test_support.h"
-#include "ycore/build_state.h"
-#include "ycore/vtk_output.h"
+#include "ycore/state/build_state.h"
+#include "ycore/output/vtk_output.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
 #include "ycrack/node_sharing.h"

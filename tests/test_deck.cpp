@@ -9,7 +9,7 @@
 #include <toml++/toml.h>
 
 #include "tests/test_support.h"
-#include "ycore/run.h"
+#include "ycore/driver/run.h"
 
 using ydry_test::run_ydry;
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "tests/test_support.h"
-#include "ycore/deck.h"
-#include "ycore/input_error.h"
-#include "ycore/mesh_input.h"
+#include "ycore/input/deck.h"
+#include "ycore/input/input_error.h"
+#include "ycore/state/mesh_input.h"
 
 using ydry::InputError;
 

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "tests/test_support.h"
-#include "ycore/input_error.h"
-#include "ycore/mesh_input.h"
+#include "ycore/input/input_error.h"
+#include "ycore/state/mesh_input.h"
 
 using ydry::InputError;
 using ydry::MeshInput;

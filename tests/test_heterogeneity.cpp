@@ -9,10 +9,10 @@
 #include <random>
 
 #include "tests/test_support.h"
-#include "ycore/joint_law.h"
-#include "ycore/mechanics.h"
-#include "ycore/run.h"
-#include "ycore/strength_heterogeneity.h"
+#include "ycore/solid/joint_law.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/driver/run.h"
+#include "ycore/solid/strength_heterogeneity.h"
 
 using namespace ydry;
 

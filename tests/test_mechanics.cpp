@@ -11,13 +11,13 @@
 #include <utility>
 
 #include "tests/test_support.h"
-#include "ycore/blocked_sum.h"
-#include "ycore/input_error.h"
-#include "ycore/joint_law.h"
-#include "ycore/mechanics.h"
-#include "ycore/node_integration.h"
-#include "ycore/numerical_failure.h"
-#include "ycore/run.h"
+#include "ycore/state/blocked_sum.h"
+#include "ycore/input/input_error.h"
+#include "ycore/solid/joint_law.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/solid/node_integration.h"
+#include "ycore/solid/numerical_failure.h"
+#include "ycore/driver/run.h"
 
 using namespace ydry;
 

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "tests/test_support.h"
-#include "ycore/build_state.h"
-#include "ycore/run.h"
+#include "ycore/state/build_state.h"
+#include "ycore/driver/run.h"
 
 using namespace ydry;
 

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "tests/test_support.h"
-#include "ycore/run.h"
+#include "ycore/driver/run.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
 #include "ymoist/moisture.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ycore/build_state.h"
+#include "ycore/state/build_state.h"
 
 using namespace ydry;
 

@@ -11,7 +11,7 @@
 #include <regex>
 #include <sstream>
 
-#include "ycore/mechanics.h"
+#include "ycore/solid/mechanics.h"
 
 namespace ydry_test {
 

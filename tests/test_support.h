@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "ycore/blocked_sum.h"
-#include "ycore/deck.h"
-#include "ycore/state.h"
+#include "ycore/state/blocked_sum.h"
+#include "ycore/input/deck.h"
+#include "ycore/state/state.h"
 
 namespace ydry_test {
 

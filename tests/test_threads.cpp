@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "tests/test_support.h"
-#include "ycore/run.h"
+#include "ycore/driver/run.h"
 
 using namespace ydry;
 using namespace ydry_test;

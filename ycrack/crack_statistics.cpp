@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-#include "ycore/joint_law.h"
+#include "ycore/solid/joint_law.h"
 #include "ycrack/union_find.h"
 
 namespace ydry {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "ycore/state.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

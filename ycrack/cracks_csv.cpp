@@ -1,6 +1,6 @@
 #include "ycrack/cracks_csv.h"
 
-#include "ycore/output_files.h"
+#include "ycore/output/output_files.h"
 
 namespace ydry {
 

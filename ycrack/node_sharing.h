@@ -1,7 +1,7 @@
 // Node sharing for moisture: which coincident corners form one moisture node.
 #pragma once
 
-#include "ycore/state.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "ycore/input_error.h"
+#include "ycore/input/input_error.h"
 
 namespace ydry {
 namespace {

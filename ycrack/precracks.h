@@ -1,8 +1,8 @@
 // Pre-existing cracks and notches ([[cracks]] in the deck, paper section 4.2).
 #pragma once
 
-#include "ycore/deck.h"
-#include "ycore/state.h"
+#include "ycore/input/deck.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

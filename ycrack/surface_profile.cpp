@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "ycore/output_files.h"
+#include "ycore/output/output_files.h"
 #include "ycrack/union_find.h"
 
 namespace ydry {

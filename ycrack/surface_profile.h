@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ycore/state.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

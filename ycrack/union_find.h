@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "ycore/state.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

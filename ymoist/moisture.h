@@ -2,8 +2,8 @@
 // exchange and fixed values, explicit in time.
 #pragma once
 
-#include "ycore/deck.h"
-#include "ycore/state.h"
+#include "ycore/input/deck.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 

@@ -4,8 +4,8 @@
 #include <limits>
 #include <numeric>
 
-#include "ycore/build_state.h"
-#include "ycore/input_error.h"
+#include "ycore/state/build_state.h"
+#include "ycore/input/input_error.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {

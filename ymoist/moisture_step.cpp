@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ycore/blocked_sum.h"
+#include "ycore/state/blocked_sum.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {

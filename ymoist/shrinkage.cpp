@@ -1,7 +1,7 @@
 // Shrinkage eigenstrain from moisture (Eqs. 18-19).
 #include <algorithm>
 
-#include "ycore/blocked_sum.h"
+#include "ycore/state/blocked_sum.h"
 #include "ymoist/moisture.h"
 
 namespace ydry {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "ycore/checkpoint_file.h"
-#include "ycore/input_error.h"
+#include "ycore/output/checkpoint_file.h"
+#include "ycore/input/input_error.h"
 
 namespace {
 

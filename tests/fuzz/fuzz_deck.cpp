@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "ycore/deck.h"
-#include "ycore/input_error.h"
+#include "ycore/input/deck.h"
+#include "ycore/input/input_error.h"
 
 namespace {
 

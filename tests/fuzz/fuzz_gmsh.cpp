@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "ycore/input_error.h"
-#include "ycore/mesh_input.h"
+#include "ycore/input/input_error.h"
+#include "ycore/state/mesh_input.h"
 
 namespace {
 

@@ -1,0 +1,250 @@
+#include "ycore/output/checkpoint.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "version.h"
+#include "ycore/contact/contact_search.h"
+
+namespace ydry {
+namespace {
+
+// Every number and array of the state that a run changes and that nothing rebuilds from the
+// deck, the mesh and the broken joints: positions and velocities (a relaxation predicts from
+// the last step's), the stresses and eigenstrains, joint damage and work and the joints' last
+// forces (their work is a trapezoid over the step), moisture, the water, energy and step
+// ledgers, the supports' reactions and work, and the contact pairs with their friction slip,
+// last forces and the positions of the last broad phase (which decide the next one).
+// Scratch that every step overwrites before reading (node forces, moisture inflows, the
+// relaxation's start positions) is left out.
+template <class S, class Field>
+void for_each_state_field(S& s, Field&& field) {
+  field("time_s", s.time_s);
+  field("moisture_steps", s.moisture_steps);
+  field("nodes.x", s.nodes.x);
+  field("nodes.y", s.nodes.y);
+  field("nodes.vx", s.nodes.vx);
+  field("nodes.vy", s.nodes.vy);
+  field("triangles.shrinkage_strain", s.triangles.shrinkage_strain);
+  field("triangles.sxx", s.triangles.sxx);
+  field("triangles.syy", s.triangles.syy);
+  field("triangles.sxy", s.triangles.sxy);
+  field("joints.broken", s.joints.broken);
+  field("joints.damage", s.joints.damage);
+  field("joints.work", s.joints.work);
+  field("joints.force", s.joints.force);
+  field("moisture.w", s.moisture.w);
+  field("water.initial_kg", s.water.initial_kg);
+  field("water.net_in_kg", s.water.net_in_kg);
+  field("water.net_in_carry", s.water.net_in_carry);
+  field("water.gross_kg", s.water.gross_kg);
+  field("mechanics.unrelaxed_s", s.mechanics.unrelaxed_s);
+  field("mechanics.last_residual", s.mechanics.last_residual);
+  field("mechanics.steps", s.mechanics.steps);
+  field("mechanics.capped_relaxations", s.mechanics.capped_relaxations);
+  field("mechanics.gravity_work_J", s.mechanics.gravity_work_J);
+  for (std::size_t b = 0; b < s.mechanics_boundaries.size(); ++b) {
+    const std::string prefix = "mechanics.boundary[" + std::to_string(b) + "].";
+    field(prefix + "reaction_x", s.mechanics_boundaries[b].reaction_x);
+    field(prefix + "reaction_y", s.mechanics_boundaries[b].reaction_y);
+    field(prefix + "work_J", s.mechanics_boundaries[b].work_J);
+  }
+  field("contact.pair_node", s.contact.pair_node);
+  field("contact.pair_edge", s.contact.pair_edge);
+  field("contact.pair_slip", s.contact.pair_slip);
+  field("contact.pair_force", s.contact.pair_force);
+  field("contact.x_built", s.contact.x_built);
+  field("contact.y_built", s.contact.y_built);
+  field("contact.work_J", s.contact.work_J);
+  field("contact.builds", s.contact.builds);
+}
+
+template <class R, class Field>
+void for_each_record_field(R& r, Field&& field) {
+  field("record.row", r.row);
+  field("record.chunk_until_s", r.chunk_until_s);
+  field("record.max_step_s", r.max_step_s);
+  field("record.next_frame", r.next_frame);
+  field("record.capped_reported", r.capped_reported);
+  field("record.finished", r.finished);
+  field("record.reactions_csv", r.reactions_csv);
+  field("record.cracks_rows", r.cracks_rows);
+  field("record.surface_rows", r.surface_rows);
+  field("record.frame_times", r.frame_times);
+}
+
+void require_finite(const Checkpoint& c, const std::vector<double>& v, const char* name) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      throw InputError(c.source + ": field '" + name + "' holds a non-finite value at " + std::to_string(i));
+}
+
+// The restored pairs must be what a broad phase makes: sorted by (corner, edge), no two
+// alike, each a surface corner against a surface edge, with a slip and six force components
+// each; then the gather lists follow from them.
+void check_contact_pairs(const State& s, const Checkpoint& checkpoint) {
+  const Contact& c = s.contact;
+  const std::size_t np = c.pair_node.size(), surfaces = c.is_surface_edge.size();  // 0 without mechanics
+  if (c.pair_edge.size() != np || c.pair_slip.size() != np || c.pair_force.size() != 6 * np)
+    throw InputError(checkpoint.source + ": contact pairs: node, edge, slip and force lists of different lengths");
+  for (std::size_t k = 0; k < np; ++k) {
+    const index_t i = c.pair_node[k], e = c.pair_edge[k];
+    const bool in_order = k == 0 || c.pair_node[k - 1] < i || (c.pair_node[k - 1] == i && c.pair_edge[k - 1] < e);
+    if (i >= surfaces || e >= surfaces || !c.is_surface_edge[e] || !(c.is_surface_edge[i] || c.is_surface_edge[previous_corner(i)]) ||
+        !in_order)
+      throw InputError(checkpoint.source + ": contact pair " + std::to_string(k) + " (corner " + std::to_string(i) + ", edge " +
+                       std::to_string(e) + ") is not a surface corner against a surface edge, in order");
+  }
+}
+
+}  // namespace
+
+std::uint64_t deck_hash(const Deck& deck) { return fnv1a64(resolved_deck_values(deck)); }
+
+std::uint64_t setup_fingerprint(const State& s) {
+  std::uint64_t hash = fnv1a64(nullptr, 0);
+  hash_array(hash, s.nodes.x0);
+  hash_array(hash, s.nodes.y0);
+  hash_array(hash, s.nodes.m);
+  hash_array(hash, s.nodes.constraint);
+  hash_array(hash, s.triangles.material);
+  hash_array(hash, s.joints.node);
+  hash_array(hash, s.joints.strength_factor);
+  return fnv1a64(reinterpret_cast<const char*>(&s.mechanics.step_s), sizeof s.mechanics.step_s, hash);
+}
+
+std::string checkpoint_bytes(const Deck& deck, const std::string& deck_text, const State& state,
+                             const RunRecord& record) {
+  CheckpointWriter out;
+  const auto put = [&](const std::string& name, const auto& value) { out.put(name, value); };
+  out.put("deck.toml", deck_text);
+  out.put("setup_fingerprint", setup_fingerprint(state));
+  for_each_state_field(state, put);
+  for_each_record_field(record, put);
+  std::vector<double> rows;
+  for (const std::vector<double>& row : record.series.rows) rows.insert(rows.end(), row.begin(), row.end());
+  out.put("record.series", rows);
+  return checkpoint_file_bytes(std::string(YDRY_VERSION) + " (" + YDRY_COMMIT + ")", deck_hash(deck), out.payload);
+}
+
+Checkpoint read_checkpoint_file(const std::string& path) {
+  std::optional<std::string> bytes = read_file(path);
+  if (!bytes) throw InputError(path + ": checkpoint file not found or not readable");
+  try {
+    Checkpoint c = read_checkpoint(std::move(*bytes));
+    c.source = path;
+    return c;
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+std::string checkpoint_deck_text(const Checkpoint& checkpoint) {
+  std::string text;
+  checkpoint.take("deck.toml", text);
+  return text;
+}
+
+Deck checkpoint_deck(const Checkpoint& checkpoint, const std::string& path, const std::string& deck_path,
+                     const std::vector<std::string>& overrides) {
+  Deck deck = read_deck(checkpoint_deck_text(checkpoint), path + " (its deck.toml)", {});
+  if (deck_hash(deck) != checkpoint.deck_hash)
+    throw InputError(path + ": the deck it holds does not resolve to the values its header was made from");
+  if (deck_path.empty()) {
+    if (!overrides.empty())
+      throw InputError("--set with --restart: a restart continues the checkpoint's deck as it is (give the DECK "
+                       "the overrides apply to only to check that it is the same)");
+    return deck;
+  }
+  Deck given = load_deck(deck_path, overrides);
+  if (deck_hash(given) == checkpoint.deck_hash) return given;
+  std::istringstream ours(resolved_deck_values(given)), theirs(resolved_deck_values(deck));
+  std::string a, b;  // the first lines that differ
+  for (bool more = true; more && a == b;) {
+    more = bool(std::getline(ours, a)) & bool(std::getline(theirs, b));
+    if (!ours) a = "(the end)";
+    if (!theirs) b = "(the end)";
+  }
+  throw InputError(deck_path + (overrides.empty() ? "" : " with its --set overrides") + " is not the deck " + path +
+                   " continues: '" + a + "' where the checkpoint has '" + b + "'");
+}
+
+void restore_broken_joints(State& s, const Checkpoint& c) {
+  std::uint64_t fingerprint = 0;
+  c.take("setup_fingerprint", fingerprint);
+  if (fingerprint != setup_fingerprint(s))
+    throw InputError(c.source + ": the deck's mesh and set-up are not those it was written from (has the mesh file "
+                     "changed, or was it written by another version of ydry?)");
+  std::vector<std::uint8_t> broken;
+  c.take("joints.broken", broken);
+  if (broken.size() != s.joints.size())
+    throw InputError(c.source + ": field 'joints.broken' holds " + std::to_string(broken.size()) + " joints, the mesh " +
+                     std::to_string(s.joints.size()));
+  for (std::size_t j = 0; j < broken.size(); ++j)
+    if (broken[j] > 1 || broken[j] < s.joints.broken[j])
+      throw InputError(c.source + ": joint " + std::to_string(j) +
+                       (broken[j] > 1 ? " has a broken flag that is neither 0 nor 1" : " is intact, but the deck's "
+                                                                                      "pre-existing cracks break it"));
+  s.joints.broken = std::move(broken);
+}
+
+void restore_state(State& s, const Checkpoint& c) {
+  // The pairs are as many as the checkpoint holds; every other array has the size the set-up
+  // and the topology give it.
+  std::vector<index_t> pairs;
+  c.take("contact.pair_node", pairs);
+  for (auto* v : {&s.contact.pair_node, &s.contact.pair_edge}) v->resize(pairs.size());
+  s.contact.pair_slip.resize(pairs.size());
+  s.contact.pair_force.resize(6 * pairs.size());
+  for_each_state_field(s, [&](const std::string& name, auto& value) {
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
+      c.take(name, value);
+    } else {
+      const std::size_t size = value.size();
+      c.take(name, value);
+      if (value.size() != size)
+        throw InputError(c.source + ": field '" + name + "' holds " + std::to_string(value.size()) +
+                         " values; this deck and mesh have " + std::to_string(size));
+    }
+  });
+  require_finite(c, s.nodes.x, "nodes.x");
+  require_finite(c, s.nodes.y, "nodes.y");
+  require_finite(c, s.nodes.vx, "nodes.vx");
+  require_finite(c, s.nodes.vy, "nodes.vy");
+  require_finite(c, s.moisture.w, "moisture.w");
+  check_contact_pairs(s, c);
+  if (s.contact.builds > 0) index_contact_pairs(s);  // a broad phase has run: the pairs are current
+}
+
+RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& s) {
+  RunRecord r;
+  for_each_record_field(r, [&](const std::string& name, auto& value) { c.take(name, value); });
+  std::vector<double> rows;
+  c.take("record.series", rows);
+  const std::size_t columns = kSeriesColumns.size();
+  if (rows.size() % columns != 0)
+    throw InputError(c.source + ": field 'record.series' does not hold whole rows of series.csv");
+  for (std::size_t k = 0; k < rows.size(); k += columns)
+    r.series.rows.emplace_back(rows.begin() + std::ptrdiff_t(k), rows.begin() + std::ptrdiff_t(k + columns));
+  // Whatever the loop would trip over: a row count that is not the rows', a time or step it
+  // could not go on from.
+  const auto valid = [&](bool ok, const char* what) {
+    if (!ok) throw InputError(c.source + ": its " + what);
+  };
+  valid(s.time_s >= 0.0 && s.time_s <= deck.end_time_s, "time is not within the run (0 to run.end_time)");
+  valid(r.row >= 1 && r.series.rows.size() == r.row, "row count is not the number of rows of series.csv it holds");
+  valid(r.frame_times.size() <= r.series.rows.size(), "frames outnumber its rows");
+  valid(r.max_step_s > 0.0 && r.max_step_s <= deck.output_interval_s, "coupling step is not in (0, run.output_interval]");
+  valid(std::isnan(r.chunk_until_s) || (r.chunk_until_s >= s.time_s && r.chunk_until_s <= deck.end_time_s),
+        "chunk of coupling steps does not end between its time and run.end_time");
+  return r;
+}
+
+std::string checkpoint_path(const std::string& outdir, const std::string& name, std::uint64_t coupling_steps) {
+  char number[32];
+  std::snprintf(number, sizeof number, "_%06llu.chk", static_cast<unsigned long long>(coupling_steps));
+  return outdir + "/checkpoints/" + name + number;
+}
+
+}  // namespace ydry

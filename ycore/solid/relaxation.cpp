@@ -1,0 +1,362 @@
+// Quasi-static relaxation of the solid (DESIGN section 4, step 3 of the coupling loop).
+//
+// Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
+// from the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
+// brought to rest by one of two methods (solver.relaxation):
+//
+// - "viscous" (default): mass-proportional damping c = 2 omega, omega^2 the Rayleigh quotient
+//   -v.(f_new - f_old) / (dt v.M v) of the last step's motion (Underwood's adaptive dynamic
+//   relaxation, with the step's velocity in place of the total displacement: a boundary that
+//   moved the solid rigidly does not fool it into no damping). As the fast modes die out the
+//   damping tends to critical for the slowest mode the load excites. Near a limit point (a
+//   softening crack tip, a block rocking on its contacts) the slowest mode is so slow that
+//   most of the Peron relaxations stop at their cap.
+// - "fire": the Fast Inertial Relaxation Engine (Bitzek, Koskinen, Gähler, Moseler, Gumbsch,
+//   Phys. Rev. Lett. 97, 170201, 2006). The motion is undamped, but the velocity is turned
+//   towards the force, v <- (1 - alpha) v + alpha |v| f^, while the power f.v stays
+//   positive, alpha decaying from 0.1 by 0.99 a step after 5 such steps; when the power turns
+//   negative (the solid has passed a minimum along its path) every node stops and alpha
+//   starts again. The norms and the direction are taken in mass-weighted coordinates
+//   (sqrt(m) v and f / sqrt(m)), so the scaled masses change the metric, not the method.
+//   The pseudo-step grows by 1.1 a step (after the same 5) up to the stable one and halves
+//   at each restart. It reaches the tolerance in many relaxations where the damping stops
+//   at the cap, in fewer steps.
+//
+// Only the equilibrium reached means anything; the path in pseudo-time does not. The state
+// with history is committed from the equilibrium alone: the joints' damage
+// (commit_joint_damage) and the friction's slip (FrictionUpdate::at_equilibrium), so the two
+// methods find the same equilibria where both converge.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "ycore/state/blocked_sum.h"
+#include "ycore/contact/contact.h"
+#include "ycore/solid/joint_law.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/solid/numerical_failure.h"
+#include "ycore/state/stage_timing.h"
+
+namespace ydry {
+namespace {
+
+struct ForceMeasures {
+  double net2 = 0;       // |net force|^2 over free components
+  double reference2 = 0; // |element forces and gravity|^2 over all nodes
+  double rayleigh_numerator = 0; // -v.(f - f_previous) over free components, v the last step's
+                                 // velocity and f_previous the force that made it
+  double twice_kinetic = 0;      // v.M v over free components
+  double power = 0;              // f.v over free components
+  double force2_over_mass = 0;   // f.M^-1 f over free components
+  double ratio() const { return reference2 > 0.0 ? std::sqrt(net2 / reference2) : (net2 > 0.0 ? INFINITY : 0.0); }
+};
+
+// Adds the joint and contact forces to the node forces (through each node's joint slots and
+// contact gather list) and measures; the Rayleigh numerator's -v.f only (compute_forces adds
+// v.f_previous).
+ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
+  Nodes& n = s.nodes;
+  const std::vector<double>& jf = s.joints.force;
+  const Contact& c = s.contact;
+  const bool contact = !c.gather_offset.empty();
+  const auto sums = blocked_sum<6>(n.size(), [&](std::size_t i, std::array<double, 6>& sum) {
+    double fx = n.fx[i], fy = n.fy[i];
+    sum[1] += fx * fx + fy * fy;
+    for (int k = 0; k < 2; ++k) {
+      const index_t slot = n.joint_slot[2 * i + k];
+      if (slot == kNoIndex) continue;
+      fx += jf[2 * std::size_t(slot)];
+      fy += jf[2 * std::size_t(slot) + 1];
+    }
+    if (contact)
+      for (index_t k = c.gather_offset[i]; k < c.gather_offset[i + 1]; ++k) {
+        fx += c.pair_force[2 * std::size_t(c.gather_entry[k])];
+        fy += c.pair_force[2 * std::size_t(c.gather_entry[k]) + 1];
+      }
+    n.fx[i] = fx;
+    n.fy[i] = fy;
+    const auto measure = [&](double f, double u) {
+      sum[0] += f * f;
+      sum[2] -= u * f;
+      sum[3] += n.m[i] * u * u;
+      if (fire_measures) {  // a division per component: only where FIRE reads them
+        sum[4] += f * u;
+        sum[5] += f * f / n.m[i];
+      }
+    };
+    if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i]);
+    if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i]);
+  }, s.ownership.node_begin);
+  return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
+}
+
+// FIRE's measures (power, f.M^-1 f) only with fire_measures. With move_first, the nodes are
+// first moved by that pseudo-step (in the element kernel's pass), which sums v.f_previous of
+// the Rayleigh numerator where it reads f_previous: so no node keeps its force of the step
+// before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md, session 25).
+ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
+                             const VelocityUpdate* move_first = nullptr) {
+  StageClock clock;
+  const double power_before = element_forces(s, move_first);
+  clock.lap(s.wall.elements);
+  joint_forces(s, dt);
+  clock.lap(s.wall.joints);
+  contact_forces(s, dt, friction);
+  clock.lap(s.wall.contact);
+  ForceMeasures measures = gather_interaction_forces(s, fire_measures);
+  clock.lap(s.wall.gather);
+  measures.rayleigh_numerator += power_before;
+  return measures;
+}
+
+// Central differences with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)); c = 0:
+// undamped.
+VelocityUpdate viscous_update(double damping, double dt) {
+  return {1.0 - 0.5 * damping * dt, 0.0, 1.0 / (1.0 + 0.5 * damping * dt), dt};
+}
+
+// FIRE (the comment at the top): the mixing, restarts and pseudo-step, from the power and
+// norms of the forces and velocities the last force evaluation measured.
+class FireSteering {
+ public:
+  explicit FireSteering(double max_step) : max_step_(max_step), step_(max_step) {}
+
+  VelocityUpdate next(const ForceMeasures& m) {
+    if (!(m.power > 0.0)) {
+      // Stop, halve the step and start turning again. A restart makes the next step one of
+      // steepest descent, x += step^2 f / m, which is stable only below 1/sqrt(2) of the
+      // central-difference limit: a full-length step would reverse the stiffest mode at
+      // every step and restart for ever (the soil resting on the base does).
+      alpha_ = kAlphaStart;
+      positive_steps_ = 0;
+      step_ = std::max(step_ * kStepDecrease, kMinStepFraction * max_step_);
+      return {0.0, 0.0, 1.0, step_};
+    }
+    if (++positive_steps_ > kDelaySteps) {
+      alpha_ *= kAlphaDecay;
+      step_ = std::min(step_ * kStepIncrease, max_step_);
+    }
+    // (1 - alpha) v + alpha |sqrt(m) v| / |f / sqrt(m)| f / m
+    const double steer = m.force2_over_mass > 0.0 ? alpha_ * std::sqrt(m.twice_kinetic / m.force2_over_mass) : 0.0;
+    return {1.0 - alpha_, steer, 1.0, step_};
+  }
+
+ private:
+  // Bitzek et al. 2006; the step never exceeds the stable one (solver.mechanics_safety).
+  static constexpr double kAlphaStart = 0.1, kAlphaDecay = 0.99;
+  static constexpr double kStepIncrease = 1.1, kStepDecrease = 0.5, kMinStepFraction = 0.02;
+  static constexpr int kDelaySteps = 5;
+  double max_step_, step_;
+  double alpha_ = kAlphaStart;
+  int positive_steps_ = 0;
+};
+
+// Moves the driven nodes by velocity x coupling_dt.
+void move_driven_nodes(State& s, double coupling_dt, double dt) {
+  Nodes& n = s.nodes;
+  const Mechanics& mech = s.mechanics;
+  for (std::size_t k = 0; k < mech.driven_node.size(); ++k) {
+    const index_t i = mech.driven_node[k];
+    n.x[i] += mech.driven_vx[k] * coupling_dt;
+    n.y[i] += mech.driven_vy[k] * coupling_dt;
+    // Seen as a velocity by one joint-force evaluation, so the joints book the jump's work.
+    n.vx[i] = mech.driven_vx[k] * coupling_dt / dt;
+    n.vy[i] = mech.driven_vy[k] * coupling_dt / dt;
+  }
+}
+
+// Reactions: the force each support exerts, -(net internal force), summed per boundary, and
+// the work done through each boundary since the last equilibrium: the trapezoid of the
+// reactions at the two equilibria times the boundary's displacement (the quasi-static
+// external work, exact for a linear solid; what the damping takes out of the jump between
+// them is not work done on the solid's equilibrium path).
+void update_reactions(State& s, double coupling_dt) {
+  const Nodes& n = s.nodes;
+  for (MechanicsBoundary& b : s.mechanics_boundaries) {
+    double rx = 0, ry = 0;
+    for (const index_t i : b.nodes) {
+      if (b.fix_x) rx -= n.fx[i];
+      if (b.fix_y) ry -= n.fy[i];
+    }
+    b.work_J += 0.5 * ((b.reaction_x + rx) * b.vx + (b.reaction_y + ry) * b.vy) * coupling_dt;
+    b.reaction_x = rx;
+    b.reaction_y = ry;
+  }
+}
+
+// Remembers where the solid starts from (for the gravity work and the velocities).
+void start_motion(State& s) {
+  Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
+    mech.x_start[i] = n.x[i];
+    mech.y_start[i] = n.y[i];
+  });
+}
+
+// Moves the free nodes on along the last coupling step's motion (the velocities relax leaves
+// behind): drying changes the eigenstrain smoothly, so the extrapolated equilibrium leaves
+// the relaxation only the curvature of the path to remove. The joint damage and the friction
+// slip are committed from the relaxed state only, so a prediction that overshoots leaves no
+// trace. (When the friction slid at every pseudo-step, it did: a block that slid in one
+// relaxation was carried on by the next prediction and held where it was put, a ratchet
+// that walked the Peron deck's right end block 6.5 um a relaxation after the drying had
+// stopped.) Like the driven nodes' jump, the prediction is seen as a velocity by one force
+// evaluation, so the joints and contacts book its work; prescribed components start at rest.
+//
+// A node's jump is at most the contact buffer (a tenth of the shortest edge). Drying moves a
+// node microns between relaxations; a node that moved farther is not drifting but falling or
+// snapping (a fragment come loose, a crack that opened), and its motion does not go on. Carried
+// on unbounded, such a motion grows from one relaxation to the next, and a jump longer than the
+// buffer can take a node past a contact surface the broad phase never saw it near: a loose
+// triangle of the Peron deck fell through the rigid base that way (bench/RESULTS.md,
+// session 23). Within the buffer the relaxation's own pseudo-steps meet the surface.
+void predict_equilibrium(State& s, double coupling_dt, double dt) {
+  Nodes& n = s.nodes;
+  const double limit = s.contact.buffer_m;
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
+    double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
+    double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
+    const double length = std::sqrt(jump_x * jump_x + jump_y * jump_y);
+    if (length > limit) {
+      jump_x *= limit / length;
+      jump_y *= limit / length;
+    }
+    n.x[i] += jump_x;
+    n.y[i] += jump_y;
+    n.vx[i] = jump_x / dt;
+    n.vy[i] = jump_y / dt;
+  });
+}
+
+// A node that moved farther than the whole mesh is wide since start_motion has run away
+// (an unstable step, an inverted element): the run stops (exit 3) rather than go on with a
+// state that is finite but meaningless.
+void stop_runaway(const State& s) {
+  const Nodes& n = s.nodes;
+  const Mechanics& mech = s.mechanics;
+  const double limit2 = mech.mesh_diagonal_m * mech.mesh_diagonal_m;
+  if (!(limit2 > 0.0)) return;  // a state init_mechanics has not set up (unit tests)
+  for (index_t i = 0; i < n.size(); ++i) {
+    const double dx = n.x[i] - mech.x_start[i], dy = n.y[i] - mech.y_start[i];
+    if (dx * dx + dy * dy <= limit2) continue;
+    std::ostringstream m;
+    m << "numerical failure at t = " << s.time_s << " s: " << describe_node(s, i) << " moved "
+      << std::sqrt(dx * dx + dy * dy) << " m in one relaxation, more than the mesh is wide ("
+      << mech.mesh_diagonal_m << " m): " << kNumericalFailureCauses;
+    throw NumericalFailure(m.str());
+  }
+}
+
+// Books the reactions, the work of the supports and of gravity since start_motion, and the
+// step count; makes the element stresses of the state reached.
+void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
+  stop_runaway(s);
+  element_stresses(s);
+  const Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  update_reactions(s, coupling_dt);
+  const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
+    const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
+    sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
+  }, s.ownership.node_begin);
+  mech.gravity_work_J += gravity[0];
+  mech.steps += std::uint64_t(result.steps);
+  mech.last_residual = result.residual;
+  if (result.capped) ++mech.capped_relaxations;
+}
+
+}  // namespace
+
+RelaxationResult relax(State& s, const RelaxationControls& controls, double coupling_dt) {
+  Nodes& n = s.nodes;
+  Mechanics& mech = s.mechanics;
+  const double dt = mech.step_s;
+  start_motion(s);
+  predict_equilibrium(s, coupling_dt, dt);
+  move_driven_nodes(s, coupling_dt, dt);
+  const bool fire_measures = controls.method == RelaxationMethod::fire;
+  // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium).
+  const FrictionUpdate friction = FrictionUpdate::at_equilibrium;
+  ForceMeasures measures = compute_forces(s, dt, friction, fire_measures);
+  if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
+  std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
+  std::fill(n.vy.begin(), n.vy.end(), 0.0);
+  // The measures of the jump's velocities, which are gone: FIRE steering with them would
+  // start by kicking every node along f / m at a tenth of the jump's speed, and the stiff
+  // joints' vibration would book work the law does not (the gf_I test shows it).
+  measures.power = measures.twice_kinetic = measures.rayleigh_numerator = 0.0;
+
+  RelaxationResult result;
+  const auto balanced = [&](const ForceMeasures& m) {
+    return m.net2 <= mech.roundoff_net2 || m.ratio() <= controls.tolerance;
+  };
+  result.residual = measures.ratio();
+  FireSteering fire(dt);
+  double damping = 0.0;
+  while (!balanced(measures) && result.steps < controls.max_steps) {
+    const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
+    measures = compute_forces(s, update.step, friction, fire_measures, &update);
+    ++result.steps;
+    if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
+    if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
+      damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / (dt * measures.twice_kinetic)), 2.0 / dt);
+    result.residual = measures.ratio();
+  }
+  result.capped = !balanced(measures);
+  commit_friction_slip(s);
+  finish_motion(s, result, coupling_dt);
+  // The velocities of the moisture clock: displacement over the coupling step.
+  const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
+  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
+    n.vx[i] = (n.x[i] - mech.x_start[i]) * rate;
+    n.vy[i] = (n.y[i] - mech.y_start[i]) * rate;
+  });
+  return result;
+}
+
+RelaxationResult move_dynamically(State& s, double coupling_dt) {
+  const Mechanics& mech = s.mechanics;
+  start_motion(s);
+  RelaxationResult result;
+  // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
+  ForceMeasures measures = compute_forces(s, 0.0, FrictionUpdate::every_step);
+  if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a dynamic step");
+  const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
+  const double dt = coupling_dt / double(substeps);
+  for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
+    move_driven_nodes(s, dt, dt);
+    const VelocityUpdate undamped = viscous_update(0.0, dt);
+    measures = compute_forces(s, dt, FrictionUpdate::every_step, false, &undamped);
+    ++result.steps;
+    if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
+  }
+  result.residual = measures.ratio();
+  finish_motion(s, result, coupling_dt);
+  return result;
+}
+
+std::size_t commit_joint_damage(State& s) {
+  Joints& jt = s.joints;
+  const auto broke = blocked_sum<1>(jt.size(), [&](std::size_t j, std::array<double, 1>& sum) {
+    const MaterialModel& m = s.materials[jt.material[j]];
+    if (jt.broken[j] || !m.mechanical || !m.breakable) return;
+    const JointKinematics k = joint_kinematics(s.nodes, &jt.node[4 * j]);
+    int failed = 0;
+    for (int p = 0; p < 3; ++p) {
+      const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
+      double& d = jt.damage[3 * j + p];
+      const double o = a * k.opening[0] + b * k.opening[1], sl = a * k.slip[0] + b * k.slip[1];
+      d = std::max(d, cohesive_traction(m, jt.strength_factor[j], jt.length0[j], o, sl, d).damage);
+      failed += d >= 1.0;
+    }
+    if (failed >= 2) {
+      jt.broken[j] = 1;
+      sum[0] += 1.0;
+    }
+  }, s.ownership.joint_begin);
+  return std::size_t(broke[0]);
+}
+
+}  // namespace ydry

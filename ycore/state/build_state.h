@@ -1,0 +1,22 @@
+// From the deck's mesh to the exploded FDEM state.
+#pragma once
+
+#include "ycore/input/deck.h"
+#include "ycore/state/mesh_input.h"
+#include "ycore/state/state.h"
+
+namespace ydry {
+
+// The generated or read mesh, oriented, with every material checked against the deck.
+MeshInput load_mesh(const Deck& deck);
+
+// Explodes the mesh: 3 nodes per triangle, joints on every interior edge inside a material
+// (none between two materials: those are separate bodies), named boundary edges as node pairs.
+// Moisture nodes are left to ycrack and ymoist.
+State build_state(const MeshInput& mesh, const Deck& deck);
+
+// The node pairs of a named boundary; InputError at `where` if the mesh has no such name.
+const std::vector<index_t>& boundary_nodes(const State& state, const std::string& name,
+                                           const std::string& where);
+
+}  // namespace ydry

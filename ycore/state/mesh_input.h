@@ -1,0 +1,64 @@
+// The mesh as it comes from a generator or a file, before it is exploded into the FDEM state:
+// shared vertices, triangles tagged with a material, and named boundary edges.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <istream>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ydry {
+
+using index_t = std::uint32_t;  // all mesh indices are 32-bit
+
+// A mesh edge's name: its two vertex ids, the smaller in the high word, so both directions
+// of the edge give the same key.
+inline std::uint64_t edge_key(index_t a, index_t b) {
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
+struct MeshInput {
+  std::vector<double> vx, vy;               // vertex coordinates, m            [vertices]
+  std::vector<index_t> tri;                 // 3 vertex ids per triangle, CCW   [3 * triangles]
+  std::vector<std::string> tri_material;    // material name per triangle       [triangles]
+  // Named boundaries (rectangle sides, Gmsh physical curves): vertex pairs of mesh edges.
+  std::map<std::string, std::vector<index_t>> boundaries;  // name -> 2 vertex ids per edge
+
+  std::size_t vertex_count() const { return vx.size(); }
+  std::size_t triangle_count() const { return tri_material.size(); }
+};
+
+// Built-in structured rectangle [0, lx] x [0, ly] of square-ish cells of about element_size;
+// pattern "right" (diagonal /), "left" (diagonal \) or "cross" (4 triangles per cell around
+// a centre vertex). Sides are named "left", "right", "bottom", "top". At most kMaxTriangles
+// (read_deck checks it).
+MeshInput generate_rectangle(double lx, double ly, double element_size,
+                             const std::string& pattern, const std::string& material);
+
+// generate_rectangle's cells along x and y, whole numbers as close to element_size as fit; as
+// doubles, so that a deck can be checked against the 32-bit indices before they are made.
+std::array<double, 2> rectangle_cells(double lx, double ly, double element_size);
+
+// The most triangles a mesh may have: the exploded mesh numbers 3 corners per triangle in
+// 32 bits, the largest index meaning none (kNoIndex).
+constexpr double kMaxTriangles = (std::numeric_limits<index_t>::max() - 1) / 3;
+
+// Gmsh 4.1 ASCII reader: 3-node triangles in physical surfaces (the surface's name is the
+// material), 2-node lines in physical curves (each curve name is a boundary). Throws
+// InputError naming the file and line on anything it cannot represent.
+MeshInput read_gmsh(const std::string& path);
+// The same from a stream; `path` names it in messages.
+MeshInput read_gmsh(std::istream& in, const std::string& path);
+
+// Makes every triangle counter-clockwise (swaps two corners of clockwise ones) and rejects
+// degenerate triangles and areas too large for a double; run on every MeshInput before use.
+void orient_counter_clockwise(MeshInput& mesh);
+
+// Renumbers the triangles in the order of their centroids along a Hilbert curve, so that
+// triangles near in the numbering are near in the mesh (ycore/state/mesh_order.cpp).
+void order_triangles_along_hilbert_curve(MeshInput& mesh);
+
+}  // namespace ydry
