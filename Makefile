@@ -60,11 +60,11 @@ sweeps: build
 	  $(if $(THREADS),--threads $(THREADS))
 	$(PYTHON) scripts/plot_sweep.py $(SWEEPS_OUT) --out $(SWEEPS_OUT)/plots
 
-# The Peron figures' robustness (issue 5; verification/peron/README.md "Robustness"): the
-# shipped deck, three heterogeneity seeds, the relaxation cap doubled and the element size
-# halved (its mesh made by gmsh), JOBS at a time, then the verdicts against the shipped run.
-# About 3 hours of one core (80 minutes on two); run it again after an interruption: runs go on from their
-# checkpoints.
+# The Peron figures' robustness (verification/peron/README.md "Robustness"): the shipped
+# deck, three heterogeneity seeds, the relaxation cap doubled and the element size halved
+# (its mesh made by gmsh), JOBS at a time, then the verdicts against the shipped run. About 3
+# hours of one core (80 minutes on two); run it again after an interruption: runs go on from
+# their checkpoints.
 inputs/peron/peron_fine.msh: inputs/peron/peron.geo
 	gmsh -2 -format msh41 -setnumber h 0.00075 -o $@ $< > $@.log
 	@! grep -q Error $@.log || (cat $@.log; rm -f $@; exit 1)

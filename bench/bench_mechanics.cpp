@@ -6,7 +6,7 @@
 // both do the same work). Then, as measures of the machine, the element pass alone (the
 // co-rotational triangle forces with the nodes' integration fused in, no joints, no contact)
 // over the same mesh, and the triangle forces alone (no integration either: the bare elastic
-// kernel issue 6 sets its target against). Figures to report, not tests.
+// kernel). Figures to report, not tests.
 //   bench_mechanics [rectangle] [peron]     (both when none is named)
 #include <omp.h>
 
@@ -22,7 +22,8 @@
 #include "ycore/output/checkpoint_file.h"
 #include "ycore/input/deck.h"
 #include "ycore/solid/mechanics.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
+#include "ycore/driver/coupling.h"
 #include "ycore/state/stage_timing.h"
 
 namespace {

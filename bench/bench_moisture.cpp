@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "ycore/input/deck.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 #include "ymoist/moisture.h"
 
 namespace {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Install the Debian 12 packages ydry needs (DESIGN section 7). Idempotent: installs only
+# Install the Debian 12 packages ydry needs. Idempotent: installs only
 # what is missing, and runs `apt-get update` first when anything is.
 #   scripts/install-deps.sh                  build, test, plotting and rendering dependencies
 #   scripts/install-deps.sh --with-paraview  also ParaView and its Python client, pvpython

@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 import plot_run  # (save, frame_data, draw_solid, draw_cracks, MM, MINUTE: the run figures' drawing)
-import sweep as sweep_runner  # (deck_digest: is a folder's run still its value's?)
+import sweep_plan  # (deck_digest: is a folder's run still its value's?)
 from plot_run import MINUTE, MM, plt
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
@@ -111,7 +111,7 @@ def load_sweep(out, sweep):
         row = {"value": entry["value"], "folder": entry["folder"], "run": None, "status": "not run"}
         deck = folder / "deck.toml"
         if "deck_digest" in entry and deck.is_file() and \
-                sweep_runner.deck_digest(deck.read_text()) != entry["deck_digest"]:
+                sweep_plan.deck_digest(deck.read_text()) != entry["deck_digest"]:
             row["status"] = "holds another deck's run: run the sweep again"
         elif (folder / "summary.json").is_file() and (folder / "cracks.csv").is_file():
             run = run_report.load_run(folder, "plot_sweep")

@@ -1,4 +1,4 @@
-// Issue 8, item 1: checkpoints and restart. A state restored from a checkpoint is the state it
+// Checkpoints and restart. A state restored from a checkpoint is the state it
 // was written from, array by array, and goes on the same; a restart from any checkpoint ends in
 // the files of the uninterrupted run, byte for byte, but for what honestly differs (log.txt,
 // summary.json's wall_s and its split by stage); damaged, truncated, foreign or mismatched checkpoints are refused
@@ -13,6 +13,8 @@
 
 #include "tests/test_support.h"
 #include "ycore/output/checkpoint.h"
+#include "ycore/driver/setup.h"
+#include "ycore/driver/coupling.h"
 #include "ycore/driver/run.h"
 
 using namespace ydry;
@@ -82,8 +84,8 @@ TEST_CASE("a state restored from a checkpoint is the state it was written from, 
   // not relaxed since the last relaxation interval began.
   const auto broken = [](const State& s) { return std::count(s.joints.broken.begin(), s.joints.broken.end(), 1); };
   double step = advance_to(written, deck, deck.end_time_s, coupling_step_limit(written, deck),
-                           [&] { return written.moisture_steps == 80; });
-  REQUIRE(written.moisture_steps == 80);
+                           [&] { return written.coupling_steps == 80; });
+  REQUIRE(written.coupling_steps == 80);
   const auto broken_at_checkpoint = broken(written);
   REQUIRE(broken_at_checkpoint >= 1);
   REQUIRE(written.mechanics.unrelaxed_s > 0.0);

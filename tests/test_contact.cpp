@@ -11,7 +11,7 @@
 #include "ycore/contact/contact.h"
 #include "ycore/contact/contact_geometry.h"
 #include "ycore/solid/mechanics.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 #include "ycrack/node_sharing.h"
 
 using namespace ydry;
@@ -250,7 +250,8 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
 // at rest on its base is given a last motion of 0.1 mm to the right, which the relaxation
 // extrapolates, so it starts 0.1 mm away with every contact slipped. Nothing drives it
 // there: the friction, which slides only at equilibrium, pulls it back to where it rested.
-// (Sliding at every pseudo-step, it stayed 99.998 % of the carry away.)
+// (Were the friction to slide at every pseudo-step, the block would stay 99.998 % of the carry
+// away.)
 TEST_CASE("a block carried off its rest by the extrapolated start is pulled back by its friction",
           "[contact][mechanics]") {
   const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));

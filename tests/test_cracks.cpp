@@ -17,6 +17,7 @@
 
 #include "tests/test_support.h"
 #include "ycore/state/build_state.h"
+#include "ycore/output/csv_table.h"
 #include "ycore/output/vtk_output.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/cracks_csv.h"
@@ -161,7 +162,7 @@ TEST_CASE("a crack that meets the top at a broken joint and, through its process
   // On x = 20 mm: broken from the top down to 15 mm, opened 100 um. From its lower end a process
   // zone (horizontal joint at y = 15 mm, vertical joint up to the top) reaches the top at
   // x = 15 mm, or at x = 25 mm, where nothing opens. One side or the other has the lower vertex
-  // id, which chose the mouth (and so a width of 0) before the opening did.
+  // id, which would choose the mouth (and so a width of 0) if the opening did not come first.
   for (const double branch_x : {0.015, 0.025}) {
     INFO("process zone up to the top at x = " << branch_x);
     State s = rectangle_state();
@@ -395,10 +396,10 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
 
 TEST_CASE("cracks.csv gains a row per crack at each output time and keeps the earlier ones", "[crack][output]") {
   const ydry_test::TempDir dir;
-  CracksCsv csv{dir.file("cracks.csv"), ""};
-  append_cracks_csv(csv, 0.0, find_cracks(rectangle_state(), 1e-5));
+  CsvTable csv{dir.file("cracks.csv"), kCracksCsvHeader, ""};
+  csv.append(cracks_csv_rows(0.0, find_cracks(rectangle_state(), 1e-5)));
   CHECK(ydry_test::read_text(csv.path) == "time_s,crack_id,x_m,width_m,length_m,penetrating,surface\n");
-  append_cracks_csv(csv, 7200.0, find_cracks(two_crack_state(), 1e-5));
+  csv.append(cracks_csv_rows(7200.0, find_cracks(two_crack_state(), 1e-5)));
 
   std::istringstream text(ydry_test::read_text(csv.path));
   std::string header, line;

@@ -9,7 +9,7 @@
 #include <toml++/toml.h>
 
 #include "tests/test_support.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 
 using ydry_test::run_ydry;
 
@@ -284,7 +284,7 @@ TEST_CASE("every deck shipped in inputs/ loads and sets up", "[deck]") {
 }
 
 TEST_CASE("a malformed --set key path is an error, not read as another key", "[deck]") {
-  // Each of these once set run.name or moisture.boundary[0].rate as if well formed.
+  // Each of these, read loosely, would set run.name or moisture.boundary[0].rate as if well formed.
   for (const char* set : {"run[-1].name=x", "run.name[-2]=x", "run.name.=x", "moisture.boundary[0x].rate=1",
                           "moisture.boundary[ 0].rate=1", "moisture.boundary[99999999999999999999].rate=1"}) {
     INFO(set);
@@ -305,7 +305,7 @@ TEST_CASE("read_deck reads a deck's text as load_deck reads its file", "[deck]")
 }
 
 TEST_CASE("a generated rectangle with more triangles than 32-bit indices number is refused", "[deck]") {
-  // 1e5 x 1e5 cells: 2e10 triangles (the count was cast to 32 bits, undefined past 2^32).
+  // 1e5 x 1e5 cells: 2e10 triangles (a count cast to 32 bits would be undefined past 2^32).
   CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.size=[1.0, 1.0]", "mesh.element_size=1e-5"}),
                     Catch::Contains("mesh.element_size: makes 2e+10 triangles"));
   CHECK_THROWS_WITH(ydry_test::strip_deck({"mesh.element_size=1e-320"}), Catch::Contains("mesh.element_size: makes inf"));

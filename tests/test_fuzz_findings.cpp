@@ -35,9 +35,9 @@ std::string deck_error(const std::string& text, const std::vector<std::string>& 
 
 }  // namespace
 
-// toml++ 3.3's formatter chose one line or several for an array from static_cast<size_t> of
-// log10(|x|), undefined below 0.1 (size = [0.1, 0.01]), and negated INT64_MIN: the resolved
-// deck is now written by toml_writer.cpp.
+// toml++ 3.3's formatter chooses one line or several for an array from static_cast<size_t> of
+// log10(|x|), undefined below 0.1 (size = [0.1, 0.01]), and negates INT64_MIN: the resolved
+// deck is written by toml_writer.cpp.
 TEST_CASE("fuzz: numbers below 0.1 and INT64_MIN in arrays are written to the resolved deck and read back exactly", "[fuzz]") {
   const ydry::Deck deck = ydry::read_deck(strip_text(), kStripPath, {"run.gravity=[-9223372036854775808, 1e-300]"});
   const std::string resolved = ydry::resolved_deck_text(deck);
@@ -83,16 +83,16 @@ TEST_CASE("fuzz: a non-ASCII character after a value is a parse error, and one i
   CHECK_THAT(run.output, Catch::Contains("deck.toml:28: "));
 }
 
-// std::filesystem::is_regular_file threw filesystem_error on a name too long to stat, which
-// ydry reported as an unexpected failure (exit 1).
+// std::filesystem::is_regular_file without an error_code throws filesystem_error on a name too
+// long to stat, which would be an unexpected failure (exit 1), not an input error.
 TEST_CASE("fuzz: a mesh file name too long to stat is not found", "[fuzz]") {
   std::string text = strip_text();
   text.replace(text.find("generator = \"rectangle\""), 23, "file = \"" + std::string(300, 'a') + ".msh\"");
   CHECK_THAT(deck_error(text), Catch::StartsWith(kStripPath + ":12: mesh.file: mesh file") && Catch::Contains("not found"));
 }
 
-// The Gmsh fuzz target's check of the mesh it gets back: coordinates near 1e300 made an
-// infinite or NaN area, which passed as counter-clockwise.
+// The Gmsh fuzz target's check of the mesh it gets back: coordinates near 1e300 make an
+// infinite or NaN area, which must not pass as counter-clockwise.
 TEST_CASE("fuzz: a triangle whose area overflows a double is refused", "[fuzz]") {
   std::string text = ydry_test::kOneTriangleMsh;
   text.replace(text.find("\n1 0 0\n"), 7, "\n1e300 0 0\n");
@@ -103,7 +103,7 @@ TEST_CASE("fuzz: a triangle whose area overflows a double is refused", "[fuzz]")
 }
 
 // A --set is bytes from the command line: a material named by invalid UTF-8 (0xDC 0xDC ...)
-// was written to the resolved deck as "\u00DC\u00DC...", which reads back as another name.
+// would be written to the resolved deck as "\u00DC\u00DC...", which reads back as another name.
 TEST_CASE("fuzz: a --set that is not UTF-8 is refused", "[fuzz]") {
   for (const std::string& set : {std::string("materials.\xdc\xdcsm.density=1500"), std::string("run.name=dry\xff"),
                                  std::string("run.name=\xc0\xae"), std::string("run.name=\xed\xa0\x80"),

@@ -11,7 +11,7 @@
 #include "tests/test_support.h"
 #include "ycore/solid/joint_law.h"
 #include "ycore/solid/mechanics.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 #include "ycore/solid/strength_heterogeneity.h"
 
 using namespace ydry;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""ctest interruption: SIGINT, SIGTERM and kill -9 on a running ydry (issue 8, item 2).
+"""ctest interruption: SIGINT, SIGTERM and kill -9 on a running ydry.
 
 The cracking notched layer (tests/test_support.h's deck, run to 6000 s with a row every 250 s
 and a frame every 500 s: 216 coupling steps, 5 broken joints) runs once uninterrupted. Then:

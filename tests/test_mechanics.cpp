@@ -17,7 +17,8 @@
 #include "ycore/solid/mechanics.h"
 #include "ycore/solid/node_integration.h"
 #include "ycore/solid/numerical_failure.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
+#include "ycore/driver/coupling.h"
 
 using namespace ydry;
 

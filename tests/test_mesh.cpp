@@ -7,7 +7,7 @@
 
 #include "tests/test_support.h"
 #include "ycore/state/build_state.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 
 using namespace ydry;
 

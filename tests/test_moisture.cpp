@@ -10,7 +10,8 @@
 #include <set>
 
 #include "tests/test_support.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
+#include "ycore/driver/coupling.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
 #include "ymoist/moisture.h"
@@ -222,7 +223,7 @@ TEST_CASE("a crack tip stays one node and takes in through both faces (Eqs. 14-1
   randomize_moisture(s);
   const double w_tip = s.moisture.w[i];
   moisture_step(s, stable_moisture_step(s, 0.9));
-  // Eqs. 15-16 with the tip's own w (DESIGN 4): two halves of 5 mm faces.
+  // Eqs. 15-16 with the tip's own w (doc/physics.md "Cracks and moisture"): two halves of 5 mm faces.
   CHECK(s.moisture.boundary_inflow[i] == Approx(kCrackH * (kCrackAir - w_tip) * 0.005 * kThickness).epsilon(1e-15));
 }
 

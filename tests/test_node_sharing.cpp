@@ -1,6 +1,6 @@
-// Node sharing across cracks (paper Eqs. 9 and 14, DESIGN section 4): how the fan of corners
-// at one vertex splits when joints break, and that the water stays put when the moisture nodes
-// are regrouped. The mesh is 2 x 2 cells of 5 mm, "right" diagonals, so the centre vertex
+// Node sharing across cracks (paper Eqs. 9 and 14, doc/physics.md "Cracks and moisture"): how
+// the fan of corners at one vertex splits when joints break, and that the water stays put when
+// the moisture nodes are regrouped. The mesh is 2 x 2 cells of 5 mm, "right" diagonals, so the centre vertex
 // (5, 5) mm has six triangles and the bottom-middle vertex (5, 0) mm three.
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <set>
 
 #include "tests/test_support.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
 #include "ymoist/moisture.h"

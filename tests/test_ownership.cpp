@@ -1,5 +1,5 @@
-// Issue 6: the threads' ranges of the solid (ycore/state/ownership.h) and the Hilbert numbering of
-// the triangles (ycore/state/mesh_order.cpp) that makes those ranges compact patches of the mesh.
+// The threads' ranges of the solid (ycore/state/ownership.h) and the Hilbert numbering of the
+// triangles (ycore/state/mesh_order.cpp) that makes those ranges compact patches of the mesh.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include "tests/test_support.h"
 #include "ycore/state/blocked_sum.h"
 #include "ycore/solid/mechanics.h"
-#include "ycore/driver/run.h"
+#include "ycore/driver/setup.h"
 
 using namespace ydry;
 using namespace ydry_test;

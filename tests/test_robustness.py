@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """ctest robustness: verification/peron/robustness.py judges each variant against the run of
-the shipped deck with the bars of issue 5 (surface crack count +-1, mean width within 10 %).
+the shipped deck with the robustness bars (surface crack count +-1, mean width within 10 %).
 
 scripts/sweep.py --slurm-only lays out the seed and relaxation studies (sweep.json); every
 folder gets its deck as `ydry check` resolves it (the reference the shipped deck, the variants

@@ -83,7 +83,7 @@ Snapshot state_snapshot(const ydry::State& s) {
                     e.gravity_work_J}},
       {"water", {s.water.initial_kg, s.water.net_in_kg, s.water.net_in_carry, s.water.gross_kg}},
       {"mechanics", {s.mechanics.unrelaxed_s, s.mechanics.last_residual, double(s.mechanics.capped_relaxations)}},
-      {"time and steps", {s.time_s, double(s.mechanics.steps), double(s.moisture_steps), double(c.builds)}}};
+      {"time and steps", {s.time_s, double(s.mechanics.steps), double(s.coupling_steps), double(c.builds)}}};
   for (const ydry::MoistureTermKind kind : m.term_kind) snapshot["moisture term kinds"].push_back(double(kind));
   for (const ydry::MechanicsBoundary& b : s.mechanics_boundaries)
     snapshot["boundary " + b.name] = {b.reaction_x, b.reaction_y, b.work_J};

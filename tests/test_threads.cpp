@@ -1,4 +1,4 @@
-// Issue 6, item 2: a cracking run is bitwise the same on 1 and 2 threads, in its final state
+// A cracking run is bitwise the same on 1 and 2 threads, in its final state
 // and in every file it writes but for the run facts that name the thread count and the wall
 // time.
 #include <catch2/catch.hpp>
@@ -7,6 +7,8 @@
 #include <filesystem>
 
 #include "tests/test_support.h"
+#include "ycore/driver/setup.h"
+#include "ycore/driver/coupling.h"
 #include "ycore/driver/run.h"
 
 using namespace ydry;

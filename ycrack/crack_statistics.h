@@ -1,5 +1,5 @@
-// Cracks as DESIGN section 5 defines them: connected sets of broken joints, each measured at
-// its mouth, for series.csv and cracks.csv.
+// Cracks: connected sets of broken joints, each measured at its mouth, for series.csv and
+// cracks.csv (doc/physics.md "Crack statistics").
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// cracks.csv (DESIGN section 5): one row per crack per output time.
+// cracks.csv (doc/outputs.md "Files of a run"): one row per crack per row time.
 #pragma once
 
 #include <string>
@@ -8,16 +8,9 @@
 
 namespace ydry {
 
-struct CracksCsv {
-  std::string path;
-  std::string rows;  // every row so far, as written
-};
+extern const char* const kCracksCsvHeader;
 
-// Appends a row per crack at time_s (crack_id: the index in `cracks`, which find_cracks
-// orders by x) and rewrites the whole file atomically, header first.
-void append_cracks_csv(CracksCsv& csv, double time_s, const std::vector<Crack>& cracks);
-
-// Writes the file with the rows so far (a restart's).
-void write_cracks_csv(const CracksCsv& csv);
+// The rows of cracks at time_s (crack_id: the index in `cracks`, which find_cracks orders by x).
+std::string cracks_csv_rows(double time_s, const std::vector<Crack>& cracks);
 
 }  // namespace ydry

@@ -61,15 +61,14 @@ std::vector<SurfacePoint> surface_profile(const State& s, const std::vector<inde
   return sorted;
 }
 
-void append_surface_csv(SurfaceCsv& csv, double time_s, const std::vector<SurfacePoint>& points) {
-  for (const SurfacePoint& p : points)
-    csv.rows += format_double(time_s) + "," + format_double(p.x0_m) + "," + format_double(p.y0_m) + "," +
-                format_double(p.ux_m) + "," + format_double(p.uy_m) + "," + std::to_string(p.segment) + "\n";
-  write_surface_csv(csv);
-}
+const char* const kSurfaceCsvHeader = "time_s,x0_m,y0_m,ux_m,uy_m,segment";
 
-void write_surface_csv(const SurfaceCsv& csv) {
-  write_file_atomically(csv.path, "time_s,x0_m,y0_m,ux_m,uy_m,segment\n" + csv.rows);
+std::string surface_csv_rows(double time_s, const std::vector<SurfacePoint>& points) {
+  std::string rows;
+  for (const SurfacePoint& p : points)
+    rows += format_double(time_s) + "," + format_double(p.x0_m) + "," + format_double(p.y0_m) + "," +
+            format_double(p.ux_m) + "," + format_double(p.uy_m) + "," + std::to_string(p.segment) + "\n";
+  return rows;
 }
 
 }  // namespace ydry

@@ -23,16 +23,9 @@ struct SurfacePoint {
 // order of their first point, so at a crack the left side (lower segment) comes first.
 std::vector<SurfacePoint> surface_profile(const State& state, const std::vector<index_t>& edges);
 
-struct SurfaceCsv {
-  std::string path;
-  std::string rows;  // every row so far, as written
-};
+extern const char* const kSurfaceCsvHeader;
 
-// Appends a row per point at time_s and rewrites the whole file atomically, header first:
-// time_s, x0_m, y0_m, ux_m, uy_m, segment.
-void append_surface_csv(SurfaceCsv& csv, double time_s, const std::vector<SurfacePoint>& points);
-
-// Writes the file with the rows so far (a restart's).
-void write_surface_csv(const SurfaceCsv& csv);
+// The rows of surface.csv at time_s, one per point: time_s, x0_m, y0_m, ux_m, uy_m, segment.
+std::string surface_csv_rows(double time_s, const std::vector<SurfacePoint>& points);
 
 }  // namespace ydry

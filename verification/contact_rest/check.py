@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Verification case contact_rest: a block resting on a rigid base under gravity (issue 4).
+"""Verification case contact_rest: a block resting on a rigid base under gravity.
 
 Runs ydry on contact_rest.toml (a 0.1 x 0.05 m elastic block on a rigid base, touching it
 only through contact) and checks that the rigid base's reaction equals the block's weight

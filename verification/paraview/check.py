@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Verification case paraview: ParaView opens a run's .pvd as its users will (issue 8, item 5).
+"""Verification case paraview: ParaView opens a run's .pvd as its users will.
 
 Runs ydry on the demo deck made to crack early and cut short (frames at 0, 4000 and 8000 s, and
 at the end time, 10000 s, off that grid), then check_pvd.py with pvpython on a private Xvfb display

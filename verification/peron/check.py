@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Verification case peron: the paper's section 5 simulation of Peron et al. (2009) (issue 5).
+"""Verification case peron: the paper's section 5 simulation of Peron et al. (2009).
 
 Runs ydry on inputs/peron/peron.toml (a 295 x 12 mm silt layer drying on a notched rigid base
 for 460,000 s; 8-9 minutes on 2 cores) on every core, or with --run DIR checks a run of that deck
@@ -23,7 +23,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 sys.path.insert(0, str(HERE.parents[1] / "scripts"))
 import run_report  # noqa: E402
-import sweep  # noqa: E402  (resolved_deck, deck_key: how sweep.py tells decks apart)
+import sweep_plan  # noqa: E402  (resolved_deck, deck_key: how scripts/sweep.py tells decks apart)
 import ydry_case  # noqa: E402
 
 DECK = ydry_case.REPO / "inputs" / "peron" / "peron.toml"
@@ -72,12 +72,12 @@ def deck_differences(outdir, ydry):
     resolve the deck."""
     path = outdir / "deck.toml"
     try:
-        shipped_text = sweep.resolved_deck(ydry, str(DECK), [])
-    except (OSError, sweep.SweepError):
+        shipped_text = sweep_plan.resolved_deck(ydry, str(DECK), [])
+    except (OSError, sweep_plan.SweepError):
         return None
     if not path.is_file():
         return None
-    used, shipped = (flat(json.loads(sweep.deck_key(text))) for text in (path.read_text(), shipped_text))
+    used, shipped = (flat(json.loads(sweep_plan.deck_key(text))) for text in (path.read_text(), shipped_text))
     return [f"{key} = {json.dumps(used.get(key, '(missing)'))} (deck {json.dumps(shipped.get(key, '(missing)'))})"
             for key in sorted(set(used) | set(shipped)) if used.get(key) != shipped.get(key)]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Robustness of the Peron figures (issue 5): does each variant keep the shipped deck's crack
+"""Robustness of the Peron figures: does each variant keep the shipped deck's crack
 count within +-1 and its mean final width within 10 %?
 
 Reads a folder that `make robustness` (scripts/sweep.py on verification/peron/robustness/*.toml)
@@ -27,7 +27,7 @@ sys.path.insert(0, str(HERE.parent))
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parents[1] / "scripts"))
 import check  # noqa: E402  (DECK, number, CRACKS, MEAN_WIDTH, MM)
-import sweep  # noqa: E402  (resolved_deck, deck_key: how sweep.py tells decks apart)
+import sweep_plan  # noqa: E402  (resolved_deck, deck_key: how scripts/sweep.py tells decks apart)
 import ydry_case  # noqa: E402
 
 COUNT_TOLERANCE = 1     # cracks, against the reference run
@@ -51,7 +51,7 @@ def figures(folder, shipped_key):
     if not (folder / "summary.json").is_file():
         return None
     deck = folder / "deck.toml"
-    is_shipped = deck.is_file() and sweep.deck_key(deck.read_text()) == shipped_key
+    is_shipped = deck.is_file() and sweep_plan.deck_key(deck.read_text()) == shipped_key
     return json.loads((folder / "summary.json").read_text()), is_shipped
 
 
@@ -75,7 +75,7 @@ def main():
     if not (args.out / "sweep.json").is_file():
         print(f"robustness: {args.out} has no sweep.json (run `make robustness` first)", file=sys.stderr)
         return 2
-    shipped_key = sweep.deck_key(sweep.resolved_deck(args.ydry, str(check.DECK), []))
+    shipped_key = sweep_plan.deck_key(sweep_plan.resolved_deck(args.ydry, str(check.DECK), []))
     runs = {name: (what, figures(args.out / name, shipped_key)) for name, what in runs_of(args.out).items()}
     reference = [name for name, (_, found) in runs.items() if found is not None and found[1]]
     if not reference or not runs[reference[0]][1][0]["completed"]:

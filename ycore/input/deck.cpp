@@ -1,4 +1,4 @@
-// The deck schema (DESIGN section 5): one reader per section, each a TableReader (toml_reader.h)
+// The deck schema (doc/deck.md): one reader per section, each a TableReader (toml_reader.h)
 // that checks types and ranges, fills defaults into the resolved deck and rejects unknown
 // keys.
 #include "ycore/input/deck.h"
@@ -193,7 +193,8 @@ std::pair<std::string, std::string> material_pair(const std::string& key, const 
 }
 
 void read_contact(TableReader r, Deck& d, const Origin& file) {
-  // Default 10 E of the stiffest deformable material (fdem-notes 3: 10 E to 100 E).
+  // Default 10 E of the stiffest deformable material, the soft end of the usual 10 E to 100 E
+  // (doc/physics.md "Contact and friction").
   std::optional<double> stiffest;
   for (const auto& [name, m] : d.materials)
     if (m.young && !m.rigid) stiffest = std::max(stiffest.value_or(0.0), *m.young);

@@ -1,4 +1,4 @@
-// The input deck (TOML, SI units, DESIGN section 5): parsed, overridden with --set,
+// The input deck (TOML, SI units, doc/deck.md): parsed, overridden with --set,
 // validated, and resolved with defaults. Every key of the schema is read here; a key the
 // schema does not know, a wrong type or an out-of-range value is an InputError naming the
 // file, line and key.

@@ -3,9 +3,9 @@
 //
 // Not toml++'s toml_formatter for the containers: in toml++ 3.3 (Debian 12) it chooses whether
 // an array fits on one line with static_cast<size_t>(log10(|x|)), undefined behaviour for any
-// number in an array below 0.1 in magnitude (size = [0.1, 0.01]), and negates INT64_MIN; the
-// deck fuzzer found it (tests/fuzz; upstream: marzer/tomlplusplus pull request 276). Scalars are
-// still printed by toml++, which writes them so that they read back exactly.
+// number in an array below 0.1 in magnitude (size = [0.1, 0.01]), and negates INT64_MIN
+// (tests/test_fuzz_findings.cpp). Scalars are still printed by toml++, which writes them so
+// that they read back exactly.
 #pragma once
 
 #include <string>

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "version.h"
+#include "ycore/output/reactions_csv.h"
 #include "ycore/contact/contact_search.h"
 
 namespace ydry {
@@ -21,7 +22,7 @@ namespace {
 template <class S, class Field>
 void for_each_state_field(S& s, Field&& field) {
   field("time_s", s.time_s);
-  field("moisture_steps", s.moisture_steps);
+  field("moisture_steps", s.coupling_steps);
   field("nodes.x", s.nodes.x);
   field("nodes.y", s.nodes.y);
   field("nodes.vx", s.nodes.vx);
@@ -68,7 +69,6 @@ void for_each_record_field(R& r, Field&& field) {
   field("record.next_frame", r.next_frame);
   field("record.capped_reported", r.capped_reported);
   field("record.finished", r.finished);
-  field("record.reactions_csv", r.reactions_csv);
   field("record.cracks_rows", r.cracks_rows);
   field("record.surface_rows", r.surface_rows);
   field("record.frame_times", r.frame_times);
@@ -125,6 +125,7 @@ std::string checkpoint_bytes(const Deck& deck, const std::string& deck_text, con
   std::vector<double> rows;
   for (const std::vector<double>& row : record.series.rows) rows.insert(rows.end(), row.begin(), row.end());
   out.put("record.series", rows);
+  out.put("record.reactions_csv", kReactionsCsvHeader + ("\n" + record.reactions_rows));  // the whole file, header included
   return checkpoint_file_bytes(std::string(YDRY_VERSION) + " (" + YDRY_COMMIT + ")", deck_hash(deck), out.payload);
 }
 
@@ -222,6 +223,12 @@ RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& 
   for_each_record_field(r, [&](const std::string& name, auto& value) { c.take(name, value); });
   std::vector<double> rows;
   c.take("record.series", rows);
+  std::string reactions;
+  c.take("record.reactions_csv", reactions);
+  const std::string header = kReactionsCsvHeader + std::string("\n");
+  if (reactions.compare(0, header.size(), header) != 0)
+    throw InputError(c.source + ": field 'record.reactions_csv' does not begin with reactions.csv's header");
+  r.reactions_rows = reactions.substr(header.size());
   const std::size_t columns = kSeriesColumns.size();
   if (rows.size() % columns != 0)
     throw InputError(c.source + ": field 'record.series' does not hold whole rows of series.csv");

@@ -32,8 +32,8 @@ struct RunRecord {
   std::uint64_t capped_reported = 0;  // capped relaxations the log has warned about
   bool finished = false;           // the row at end_time is written
   Series series;                   // series.csv's rows
-  std::string reactions_csv;       // reactions.csv, header included
-  std::string cracks_rows, surface_rows;  // cracks.csv's and surface.csv's rows
+  std::string reactions_rows, cracks_rows, surface_rows;  // the rows of reactions.csv, cracks.csv and
+                                   // surface.csv (CsvTable::rows)
   std::vector<double> frame_times; // s, the frames written
 };
 

@@ -35,7 +35,7 @@ void check_resume_dir(const std::string& outdir, const std::string& deck_text);
 // everything else for the restart.
 void resume_output_dir(const std::string& outdir, const std::string& deck_text);
 
-// The columns of series.csv, in order (DESIGN section 5); summary.json repeats the last row.
+// The columns of series.csv, in order (doc/outputs.md "Files of a run"); summary.json repeats the last row.
 extern const std::vector<std::string> kSeriesColumns;
 
 struct Series {

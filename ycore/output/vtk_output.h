@@ -1,5 +1,5 @@
 // ParaView output: one compressed .vtu per frame through VTK's XML writer, and a .pvd that
-// lists the frames with their times (DESIGN section 5).
+// lists the frames with their times (doc/outputs.md "Files of a run").
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // Reductions whose result does not depend on the thread count: the index range is cut into
 // fixed blocks, each block is summed in order by one thread, and the block sums are added
-// in block order (DESIGN section 6: no reductions whose order depends on the schedule).
+// in block order: no reduction whose order depends on the schedule (doc/threading.md "Sums").
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,5 @@
-// Triangles renumbered along a Hilbert curve through their centroids (issue 6).
+// Triangles renumbered along a Hilbert curve through their centroids (doc/threading.md
+// "Ownership slots").
 //
 // A mesh generator's numbering need not be local: in the Peron mesh from Gmsh, the two
 // triangles of a joint lie a median 835 places apart. Each thread owns a contiguous range of

@@ -1,9 +1,9 @@
-// Which thread works on which part of the solid (issue 6). Every mechanical loop of a
-// relaxation step gives thread t the same contiguous range of triangles, of their corner
-// nodes and of the joints whose first triangle lies in it, so that the data a step writes
-// (forces, positions) stay in the cache of the core that wrote them and is read there by the
-// next loop. Interleaved and plain static schedules that differ from loop to loop move most
-// of it between cores at every loop instead.
+// Which thread works on which part of the solid (doc/threading.md "Ownership slots"). Every
+// mechanical loop of a relaxation step gives thread t the same contiguous range of triangles,
+// of their corner nodes and of the joints whose first triangle lies in it, so that the data a
+// step writes (forces, positions) stay in the cache of the core that wrote them and is read
+// there by the next loop. Interleaved and plain static schedules that differ from loop to
+// loop would move most of it between cores at every loop.
 //
 // The ranges are cut once, into kOwnershipSlots slots of about the same estimated work
 // (partition_for_threads): the rigid base of the Peron mesh, whose triangles cost almost

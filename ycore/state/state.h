@@ -205,7 +205,7 @@ struct State {
   std::vector<std::string> material_names;                 // material id -> deck name
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
   double time_s = 0;
-  std::uint64_t moisture_steps = 0;
+  std::uint64_t coupling_steps = 0;  // steps of the staggered loop since t = 0
   StageSeconds wall;  // this process's wall time by stage (not part of the physics)
 };
 

@@ -1,0 +1,86 @@
+#include "ycore/driver/coupling.h"
+
+#include <algorithm>
+
+#include "ycore/contact/contact.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/state/stage_timing.h"
+#include "ycrack/node_sharing.h"
+#include "ymoist/moisture.h"
+
+namespace ydry {
+namespace {
+
+bool any_moisture(const State& s) { return s.moisture.size() > 0; }
+
+}  // namespace
+
+std::vector<std::uint8_t> triangles_with_moisture(const State& s, const Deck& deck) {
+  std::vector<std::uint8_t> flags(s.triangles.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    flags[t] = deck.materials.at(s.material_names[s.triangles.material[t]]).has_moisture();
+  return flags;
+}
+
+void split_across_broken_joints(State& s, const Deck& deck) {
+  if (any_moisture(s)) {
+    const std::vector<index_t> old_mnode = s.nodes.mnode;
+    const std::vector<double> old_w = s.moisture.w;
+    group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
+    remap_moisture_nodes(s, deck, old_mnode, old_w);
+  } else {
+    tie_corners(s.joints, s.nodes);
+  }
+  refresh_contact_surfaces(s);
+}
+
+double coupling_step_limit(const State& s, const Deck& deck) {
+  double step = deck.output_interval_s;
+  if (any_moisture(s)) step = std::min(step, stable_moisture_step(s, deck.moisture_safety));
+  if (deck.max_coupling_step_s > 0.0) step = std::min(step, deck.max_coupling_step_s);
+  return step;
+}
+
+bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
+  // The solid's force passes book their own stages.
+  if (deck.dynamic)
+    move_dynamically(s, dt);
+  else
+    relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation}, dt);
+  StageClock cracking;
+  const bool broke = commit_joint_damage(s) > 0;
+  if (broke) split_across_broken_joints(s, deck);
+  cracking.lap(s.wall.cracking);
+  return broke;
+}
+
+bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
+  StageClock clock;
+  if (any_moisture(s)) moisture_step(s, dt);                        // (1) Eqs. 1-17
+  clock.lap(s.wall.moisture);
+  if (!deck.mechanics) return false;
+  s.mechanics.unrelaxed_s += dt;
+  if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
+  update_shrinkage_strain(s);                                       // (2) Eqs. 18-19
+  clock.lap(s.wall.moisture);
+  const bool broke = equilibrate_and_break(s, deck, s.mechanics.unrelaxed_s);  // (3), (4)
+  s.mechanics.unrelaxed_s = 0.0;
+  return broke && any_moisture(s);
+}
+
+double advance_to(State& s, const Deck& deck, double until_s, double max_step_s, const std::function<bool()>& pause) {
+  while (s.time_s < until_s) {
+    const double remaining = until_s - s.time_s;
+    // The last step lands exactly on until_s (it is never longer than a stable step), and
+    // the solid is in equilibrium there.
+    const bool last = remaining <= max_step_s;
+    const bool split = coupling_step(s, deck, last ? remaining : max_step_s, last);
+    s.time_s = last ? until_s : s.time_s + max_step_s;
+    ++s.coupling_steps;
+    if (split) max_step_s = std::min(max_step_s, coupling_step_limit(s, deck));  // smaller nodes
+    if (pause && pause()) break;
+  }
+  return max_step_s;
+}
+
+}  // namespace ydry

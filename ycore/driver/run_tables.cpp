@@ -1,0 +1,80 @@
+#include "ycore/driver/run_tables.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "version.h"
+#include "ycore/solid/mechanics.h"
+#include "ycore/state/stage_timing.h"
+#include "ymoist/moisture.h"
+
+namespace ydry {
+
+std::vector<index_t> right_end_corners(const State& s) {
+  const Nodes& n = s.nodes;
+  std::vector<index_t> corners;
+  double best_x = -INFINITY, best_y = -INFINITY, span = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) span = std::max({span, std::fabs(n.x0[i]), std::fabs(n.y0[i])});
+  const double tolerance = 1e-9 * span;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const MaterialModel& m = s.materials[s.triangles.material[triangle_of(index_t(i))]];
+    if (!m.mechanical || !m.breakable) continue;
+    const bool further = n.x0[i] > best_x + tolerance ||
+                         (n.x0[i] > best_x - tolerance && n.y0[i] > best_y + tolerance);
+    if (further) best_x = n.x0[i], best_y = n.y0[i], corners.clear();
+    if (std::fabs(n.x0[i] - best_x) <= tolerance && std::fabs(n.y0[i] - best_y) <= tolerance)
+      corners.push_back(index_t(i));
+  }
+  return corners;
+}
+
+std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end,
+                               const std::vector<Crack>& crack_list) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool moisture = s.moisture.size() > 0;
+  std::vector<double> row = {s.time_s,
+                             moisture ? mean_moisture(s) : nan,
+                             moisture ? s.water.initial_kg - total_water_kg(s) : nan,
+                             moisture ? water_balance_error(s) : nan};
+  if (!deck.mechanics) {
+    row.resize(kSeriesColumns.size(), nan);
+    return row;
+  }
+  const CrackSummary cracks = summarize_cracks(crack_list);
+  double right_end_ux = nan;
+  if (!right_end.empty()) {
+    right_end_ux = 0;
+    for (const index_t i : right_end) right_end_ux += (s.nodes.x[i] - s.nodes.x0[i]) / right_end.size();
+  }
+  const Energies e = energies(s);
+  const double broken = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
+  row.insert(row.end(), {double(cracks.count), cracks.mean_width_m, cracks.total_width_m, cracks.mean_length_m,
+                         double(cracks.surface_count), cracks.surface_mean_width_m, cracks.surface_total_width_m,
+                         right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
+                         e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
+                         double(s.mechanics.steps)});
+  return row;
+}
+
+JsonObject summary_json(const Deck& deck, const State& s, const Series& series, int closed_cracks, double wall_s,
+                        bool completed) {
+  JsonObject j;
+  j.text("name", deck.name);
+  j.text("version", std::string(YDRY_VERSION) + " (" + YDRY_COMMIT + ")");
+  for (std::size_t c = 0; c < kSeriesColumns.size(); ++c) j.number(kSeriesColumns[c], series.rows.back()[c]);
+  j.integer("threads", omp_get_max_threads());
+  j.number("wall_s", wall_s);
+  for (const auto& [name, seconds] : wall_by_stage(s.wall, wall_s)) j.number("wall_" + name + "_s", seconds);
+  j.integer("elements", static_cast<long long>(s.triangles.size()));
+  j.integer("joints", static_cast<long long>(s.joints.size()));
+  j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
+  j.integer("moisture_steps", static_cast<long long>(s.coupling_steps));  // the coupling steps
+  if (deck.mechanics) j.integer("closed_crack_count", closed_cracks);
+  j.boolean("completed", completed);
+  return j;
+}
+
+}  // namespace ydry
