@@ -17,14 +17,16 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ycore/output/checkpoint_file.h"
 #include "ycore/input/deck.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/element_forces.h"
 #include "ycore/driver/setup.h"
 #include "ycore/driver/coupling.h"
 #include "ycore/state/stage_timing.h"
+#include "ycore/state/state_fields.h"
 
 namespace {
 
@@ -58,15 +60,19 @@ std::size_t damaged_joints(const ydry::State& s) {
   return count;
 }
 
-// FNV-1a-64 of what a run moves: positions, velocities, damage, breakage and moisture. Printed
-// so that two builds' runs can be told the same bits or not (a change meant to keep the
-// results must keep it).
+// FNV-1a-64 of the state's history and topology (ycore/state/state_fields.h). Printed so that
+// two builds' runs can be told the same bits or not (a change meant to keep the results must
+// keep it).
 std::uint64_t state_hash(const ydry::State& s) {
   std::uint64_t hash = ydry::fnv1a64(nullptr, 0);
-  for (const std::vector<double>* v : {&s.nodes.x, &s.nodes.y, &s.nodes.vx, &s.nodes.vy, &s.joints.damage})
-    ydry::hash_array(hash, *v);
-  ydry::hash_array(hash, s.joints.broken);
-  ydry::hash_array(hash, s.moisture.w);
+  const auto add = [&](const std::string&, const auto& value) {
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>)
+      hash = ydry::fnv1a64(reinterpret_cast<const char*>(&value), sizeof value, hash);
+    else
+      ydry::hash_array(hash, value);
+  };
+  ydry::for_each_history_field(s, add);
+  ydry::for_each_topology_field(s, add);
   return hash;
 }
 
@@ -112,7 +118,8 @@ double time_element_pass(const ydry::State& start, int threads, int steps, bool 
   ydry::State s = start;
   const ydry::VelocityUpdate undamped{1.0, 0.0, 1.0, s.mechanics.step_s};
   const auto t0 = std::chrono::steady_clock::now();
-  for (int k = 0; k < steps; ++k) ydry::element_forces(s, integrate ? &undamped : nullptr);
+  for (int k = 0; k < steps; ++k)
+    ydry::element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes, integrate ? &undamped : nullptr);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

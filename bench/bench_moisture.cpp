@@ -7,17 +7,18 @@
 
 #include "ycore/input/deck.h"
 #include "ycore/driver/setup.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_step.h"
 
 namespace {
 
 double node_steps_per_second(const ydry::Deck& deck, int threads, int steps) {
   omp_set_num_threads(threads);
   ydry::State state = ydry::setup_state(deck);
-  const double dt = ydry::stable_moisture_step(state, deck.moisture_safety);
-  ydry::moisture_step(state, dt);  // warm-up
+  const double dt = ydry::stable_moisture_step(state.moisture, state.moisture_elements, deck.moisture_safety);
+  ydry::moisture_step(state.nodes, dt, state.moisture_elements, state.moisture, state.water);  // warm-up
   const auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < steps; ++i) ydry::moisture_step(state, dt);
+  for (int i = 0; i < steps; ++i)
+    ydry::moisture_step(state.nodes, dt, state.moisture_elements, state.moisture, state.water);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return double(state.moisture.size()) * steps / s;
 }

@@ -8,9 +8,10 @@
 #include <random>
 
 #include "tests/test_support.h"
-#include "ycore/contact/contact.h"
+#include "ycore/contact/contact_forces.h"
 #include "ycore/contact/contact_geometry.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/contact/contact_setup.h"
+#include "ycore/solid/relaxation.h"
 #include "ycore/driver/setup.h"
 #include "ycrack/node_sharing.h"
 
@@ -32,7 +33,7 @@ State two_triangles(ydry_test::TempDir& dir) {
 void break_joint(State& s) {
   s.joints.broken[0] = 1;
   tie_corners(s.joints, s.nodes);
-  refresh_contact_surfaces(s);
+  refresh_contact_surfaces(s.nodes, s.joints, s.contact);
 }
 
 // The joint's face on its first triangle: from node 0 to node 1, outward normal (ty, -tx).
@@ -90,7 +91,7 @@ TEST_CASE("two triangles pressed through a broken joint's faces: p_n t g per cor
   State s = two_triangles(dir);
   const double depth = 1.0e-6;
   const Face face = press_through_broken_joint(s, depth);
-  contact_forces(s, 0.0);
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0);
   const std::vector<double> f = contact_force_on_nodes(s);
 
   double sum_x = 0, sum_y = 0, largest = 0;
@@ -123,9 +124,11 @@ TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(p
   }
   const index_t corner = s.joints.node[3];
   const double normal = kPenalty * kThickness * depth, cap = std::tan(30.0 * M_PI / 180.0) * normal;
-  contact_forces(s, 1e-6);  // one step: the elastic slip of 1 nm is below the cap
+  // One step: the elastic slip of 1 nm is below the cap.
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 1e-6);
   CHECK(pressed_corner_force(s, corner, face).second == Approx(-kPenalty * kThickness * 1e-9).epsilon(1e-6));
-  for (int step = 0; step < 1000; ++step) contact_forces(s, 1e-6);  // 1 um more: sliding
+  for (int step = 0; step < 1000; ++step)  // 1 um more: sliding
+    contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 1e-6);
   CHECK(pressed_corner_force(s, corner, face).second == Approx(-cap).epsilon(1e-9));
   CHECK(pressed_corner_force(s, corner, face).first == Approx(normal).epsilon(1e-9));
   CHECK(s.contact.work_J > 0.0);  // friction took work out of the sliding
@@ -151,7 +154,8 @@ TEST_CASE("a corner's friction is kept when its contact passes to the next edge 
     return (c.pair_force[6 * p] * tx + c.pair_force[6 * p + 1] * ty) / std::hypot(tx, ty);
   };
   const auto normal = [&](std::size_t p) { return std::hypot(c.pair_force[6 * p], c.pair_force[6 * p + 1]); };
-  contact_forces(s, 0.0, FrictionUpdate::at_equilibrium);
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0,
+                 FrictionUpdate::at_equilibrium);
   const auto before = active_pairs();
   std::map<index_t, double> friction_before;
   for (const auto& [corner, p] : before) friction_before[corner] = tangential(p);
@@ -159,7 +163,8 @@ TEST_CASE("a corner's friction is kept when its contact passes to the next edge 
   constexpr double kMove = 3e-9, kStep = 1.0;  // m, s
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     if (!s.nodes.constraint[i]) s.nodes.x[i] += kMove, s.nodes.vx[i] = kMove / kStep;
-  contact_forces(s, kStep, FrictionUpdate::at_equilibrium);
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), kStep,
+                 FrictionUpdate::at_equilibrium);
   const auto after = active_pairs();
   REQUIRE(after.size() == before.size());
   int checked = 0, passed_on = 0;
@@ -221,7 +226,7 @@ TEST_CASE("no contact force between triangles still tied by an intact joint, how
   State s = two_triangles(dir);
   const Face face = first_face(s);
   move_second_triangle(s, 0.1 * face.length * face.tx - 1e-5 * face.ty, 0.1 * face.length * face.ty + 1e-5 * face.tx);
-  contact_forces(s, 0.0);
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0);
   for (const double f : contact_force_on_nodes(s)) CHECK(f == 0.0);
   // Both triangles' corners are surface corners (three outer edges each), yet no pair
   // joins corners of one tie group.

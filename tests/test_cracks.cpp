@@ -231,7 +231,7 @@ TEST_CASE("a crack reaching the top splits its surface vertex into two points on
   State s = two_crack_state();
   REQUIRE(break_vertical(s, 0.02, 0.0, kHeight / 2) == 2);
   tie_corners(s.joints, s.nodes);
-  const std::vector<SurfacePoint> points = surface_profile(s, s.boundary_edges.at("top"));
+  const std::vector<SurfacePoint> points = surface_profile(s.nodes, s.boundary_edges.at("top"));
   REQUIRE(points.size() == 9 + 2);
   const double x0[11] = {0, 5, 10, 10, 15, 20, 25, 30, 30, 35, 40};  // mm
   const int segment[11] = {0, 0, 0, 1, 1, 1, 1, 1, 2, 2, 2};

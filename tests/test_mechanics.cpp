@@ -14,9 +14,13 @@
 #include "ycore/state/blocked_sum.h"
 #include "ycore/input/input_error.h"
 #include "ycore/solid/joint_law.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/element_forces.h"
+#include "ycore/solid/energies.h"
+#include "ycore/solid/joint_forces.h"
 #include "ycore/solid/node_integration.h"
 #include "ycore/solid/numerical_failure.h"
+#include "ycore/solid/relaxation.h"
+#include "ycore/solid/stable_step.h"
 #include "ycore/driver/setup.h"
 #include "ycore/driver/coupling.h"
 
@@ -30,9 +34,9 @@ constexpr double kYoung = 1.0e6, kDensity = 1000.0;
 // Net nodal forces: elements and gravity, then the joints through each node's slots; and the
 // element stresses.
 void net_forces(State& s) {
-  element_forces(s);
-  element_stresses(s);
-  joint_forces(s, 0.0);
+  element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes);
+  element_stresses(s.nodes, s.ownership, s.materials, s.triangles);
+  joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     for (int k = 0; k < 2; ++k) {
       const index_t slot = s.nodes.joint_slot[2 * i + k];
@@ -259,11 +263,11 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
     for (MaterialModel& m : s.materials) m.breakable = breakable;
     ydry_test::on_1_and_2_threads([&](int threads) {
       std::fill(s.joints.force.begin(), s.joints.force.end(), 0.0);
-      joint_forces(s, 0.0);
+      joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
       std::size_t differing = 0;
       for (std::size_t j = 0; j < s.joints.size(); ++j) {
         double full[8];
-        joint_nodal_forces(s, j, full);
+        joint_nodal_forces(s.nodes, s.joints, s.mechanics, s.materials, j, full);
         for (int k = 0; k < 8; ++k) differing += !ydry_test::same_bits({full[k]}, {s.joints.force[8 * j + k]});
       }
       INFO(threads << " thread(s), breakable " << breakable);
@@ -289,8 +293,8 @@ TEST_CASE("the element kernel's vectorised loop gives the forces and stresses of
   }
   for (double& eps : s.triangles.shrinkage_strain) eps = -1e-3 * std::fabs(unit(rng));
   const auto forces_and_stresses = [&] {
-    element_forces(s);
-    element_stresses(s);
+    element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes);
+    element_stresses(s.nodes, s.ownership, s.materials, s.triangles);
     std::vector<double> out = s.nodes.fx;
     for (const std::vector<double>* v : {&s.nodes.fy, &s.triangles.sxx, &s.triangles.syy, &s.triangles.sxy})
       out.insert(out.end(), v->begin(), v->end());
@@ -325,7 +329,7 @@ TEST_CASE("the node integration moves the free components alone, with the same b
   }
   const VelocityUpdate update{0.9, 1e-4, 0.99, 1e-3};
   PowerLanes power;
-  integrate_node_range(s, 0, n.size(), update, power);
+  integrate_node_range(n, 0, n.size(), update, power);
   const double vx = (0.9 * 3e-3 + (1e-3 + 1e-4) * 0.3 / 0.7) * 0.99;
   const double vy = (0.9 * -7e-3 + (1e-3 + 1e-4) * 1.1 / 0.7) * 0.99;
   std::size_t wrong = 0, free_xs = 0, free_ys = 0;
@@ -362,8 +366,8 @@ TEST_CASE("nodes moved in the element kernel's pass take the bits of nodes moved
   const VelocityUpdate update{0.9, 1e-7, 1.0, 5e-7};
   State expected = moved;
   PowerLanes expected_power;
-  integrate_node_range(expected, 0, expected.nodes.size(), update, expected_power);
-  element_forces(expected);
+  integrate_node_range(expected.nodes, 0, expected.nodes.size(), update, expected_power);
+  element_forces(expected.triangles, expected.mechanics, expected.ownership, expected.materials, expected.nodes);
   const auto positions_and_forces = [](const State& s) {
     std::vector<double> out;
     for (const std::vector<double>* v : {&s.nodes.x, &s.nodes.y, &s.nodes.vx, &s.nodes.vy, &s.nodes.fx, &s.nodes.fy})
@@ -378,7 +382,7 @@ TEST_CASE("nodes moved in the element kernel's pass take the bits of nodes moved
   ydry_test::on_1_and_2_threads([&](int threads) {
     INFO(threads << " thread(s)");
     State s = moved;
-    power.push_back(element_forces(s, &update));
+    power.push_back(element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes, &update));
     CHECK(ydry_test::same_bits(positions_and_forces(s), positions_and_forces(expected)));
   });
   REQUIRE(power.size() == 2);
@@ -417,7 +421,7 @@ TEST_CASE("the stable step is below 2 / omega_max of the linearised solid and wi
   ydry_test::TempDir dir;
   State s = setup_state(ydry_test::block_deck(dir, "right"));
   const std::size_t nn = s.nodes.size();
-  const double step = stable_mechanics_step(s, 1.0);
+  const double step = stable_mechanics_step(s.nodes, s.triangles, s.mechanics, s.contact, s.materials, 1.0);
   // Stiffness by central differences of the net forces, mass-normalised: M^-1/2 K M^-1/2.
   Eigen::MatrixXd k(2 * nn, 2 * nn);
   const double h = 1e-10;
@@ -570,11 +574,11 @@ TEST_CASE("the joint kernel computes every joint of a material with mechanics, r
       s.nodes.x[i] += 1e-6 * unit(rng);
       s.nodes.y[i] += 1e-6 * unit(rng);
     }
-    joint_forces(s, 0.0);
+    joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
     std::size_t wrong = 0, carrying = 0;
     for (std::size_t j = 0; j < s.joints.size(); ++j) {
       double expected[8];
-      joint_nodal_forces(s, j, expected);  // 0 for a rigid material's joint
+      joint_nodal_forces(s.nodes, s.joints, s.mechanics, s.materials, j, expected);  // 0 for a rigid material's joint
       carrying += expected[0] != 0.0;
       for (int k = 0; k < 8; ++k) wrong += !ydry_test::same_bits({expected[k]}, {s.joints.force[8 * j + k]});
     }

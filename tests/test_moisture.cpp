@@ -14,7 +14,8 @@
 #include "ycore/driver/coupling.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_setup.h"
+#include "ymoist/moisture_step.h"
 
 using namespace ydry;
 using ydry_test::strip_deck;
@@ -44,7 +45,7 @@ TEST_CASE("triangle inflows are -k t A grad N_i . grad w and sum to zero (Eq. 8)
   std::uniform_real_distribution<double> uniform(0.0, 0.5);
   for (double& w : s.moisture.w) w = uniform(rng);
   const std::vector<double> w_before = s.moisture.w;
-  moisture_step(s, 1e-3);  // fills corner_inflow from w_before
+  moisture_step(s.nodes, 1e-3, s.moisture_elements, s.moisture, s.water);  // fills corner_inflow from w_before
 
   for (index_t t = 0; t < s.triangles.size(); ++t) {
     const double k = s.material_names[s.triangles.material[t]] == "soil" ? 2.0e-6 : 7.0e-6;
@@ -76,7 +77,7 @@ TEST_CASE("triangle inflows are -k t A grad N_i . grad w and sum to zero (Eq. 8)
 TEST_CASE("the stable moisture step is within the true explicit limit 2 / lambda_max", "[moisture]") {
   for (const char* pattern : {"\"right\"", "\"cross\""}) {
     State s = setup_state(strip_deck({"mesh.element_size=0.0025", std::string("mesh.pattern=") + pattern}));
-    const double dt_bound = stable_moisture_step(s, 1.0);
+    const double dt_bound = stable_moisture_step(s.moisture, s.moisture_elements, 1.0);
     // Probe A = M^-1 K column by column: one step from w = e_j gives w' = e_j - dt A e_j.
     // The strip's only boundary term is a constant flux, so switch it off for the probe.
     std::fill(s.moisture.term_rate.begin(), s.moisture.term_rate.end(), 0.0);
@@ -85,7 +86,7 @@ TEST_CASE("the stable moisture step is within the true explicit limit 2 / lambda
     for (index_t j = 0; j < n; ++j) {
       std::fill(s.moisture.w.begin(), s.moisture.w.end(), 0.0);
       s.moisture.w[j] = 1.0;
-      moisture_step(s, 1.0);
+      moisture_step(s.nodes, 1.0, s.moisture_elements, s.moisture, s.water);
       for (index_t i = 0; i < n; ++i) A(i, j) = (i == j ? 1.0 : 0.0) - s.moisture.w[i];
     }
     const double lambda_max = A.eigenvalues().real().maxCoeff();
@@ -98,11 +99,12 @@ TEST_CASE("the stable moisture step is within the true explicit limit 2 / lambda
 TEST_CASE("water in through a flux boundary equals rate x length x thickness x time", "[moisture]") {
   const double rate = 1e-5, thickness = 0.05, height = 0.01, duration = 3.0e5;
   State s = setup_state(strip_deck({"run.thickness=0.05"}));
-  advance_to(s, strip_deck({"run.thickness=0.05"}), duration, stable_moisture_step(s, 0.9));
+  advance_to(s, strip_deck({"run.thickness=0.05"}), duration,
+             stable_moisture_step(s.moisture, s.moisture_elements, 0.9));
   const double expected = rate * height * thickness * duration;
-  CHECK(total_water_kg(s) - s.water.initial_kg == Approx(expected).epsilon(1e-12));
+  CHECK(total_water_kg(s.moisture) - s.water.initial_kg == Approx(expected).epsilon(1e-12));
   CHECK(s.water.net_in_kg + s.water.net_in_carry == Approx(expected).epsilon(1e-12));
-  CHECK(water_balance_error(s) < 1e-12);
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-12);
 }
 
 TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture][determinism]") {
@@ -110,7 +112,7 @@ TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture]
   std::vector<double> w[2];
   ydry_test::on_1_and_2_threads([&](int threads) {
     State s = setup_state(deck);
-    advance_to(s, deck, 2.0e5, stable_moisture_step(s, 0.9));
+    advance_to(s, deck, 2.0e5, stable_moisture_step(s.moisture, s.moisture_elements, 0.9));
     w[threads - 1] = s.moisture.w;
   });
   CHECK(w[0] == w[1]);
@@ -119,7 +121,7 @@ TEST_CASE("moisture steps are bitwise identical at 1 and 2 threads", "[moisture]
 TEST_CASE("the 5 mm strip matches Eq. 20 within 0.5 % (relative L2) at 800k s", "[moisture][verification]") {
   const Deck deck = strip_deck();
   State s = setup_state(deck);
-  advance_to(s, deck, 8.0e5, stable_moisture_step(s, deck.moisture_safety));
+  advance_to(s, deck, 8.0e5, stable_moisture_step(s.moisture, s.moisture_elements, deck.moisture_safety));
   double err2 = 0, ref2 = 0;
   for (index_t i = 0; i < s.moisture.size(); ++i) {
     const index_t c = s.moisture.corner[s.moisture.corner_offset[i]];
@@ -130,7 +132,7 @@ TEST_CASE("the 5 mm strip matches Eq. 20 within 0.5 % (relative L2) at 800k s", 
   const double l2 = std::sqrt(err2 / ref2);
   INFO("relative L2 error " << l2);
   CHECK(l2 <= 0.005);
-  CHECK(water_balance_error(s) < 1e-12);
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-12);
 }
 
 TEST_CASE("a joint that breaks splits the moisture nodes: water is conserved and no longer crosses", "[moisture][mechanics]") {
@@ -145,7 +147,7 @@ TEST_CASE("a joint that breaks splits the moisture nodes: water is conserved and
   double step = advance_to(s, deck, 300.0, coupling_step_limit(s, deck));
   REQUIRE(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1) == 4);
   CHECK(s.moisture.size() == intact_nodes + 5);  // the five vertices of the cut line split
-  CHECK(water_balance_error(s) < 1e-12);
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-12);
   const auto right_half_water = [&] {
     double water = 0;
     for (std::size_t i = 0; i < s.moisture.size(); ++i) {
@@ -155,11 +157,11 @@ TEST_CASE("a joint that breaks splits the moisture nodes: water is conserved and
     }
     return water;
   };
-  const double right_before = right_half_water(), total_before = total_water_kg(s);
+  const double right_before = right_half_water(), total_before = total_water_kg(s.moisture);
   step = advance_to(s, deck, 600.0, step);
-  CHECK(total_water_kg(s) > total_before * 1.001);          // the left half keeps taking water in
+  CHECK(total_water_kg(s.moisture) > total_before * 1.001);          // the left half keeps taking water in
   CHECK(right_half_water() == Approx(right_before).epsilon(1e-12));  // the right half gets none of it
-  CHECK(water_balance_error(s) < 1e-12);
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-12);
 }
 
 namespace {
@@ -195,19 +197,19 @@ TEST_CASE("one crack face takes in h_c (w_e - (w1 + w2)/2) L t, half at each end
   REQUIRE(std::set<index_t>(node, node + 4).size() == 4);
   randomize_moisture(s);
   s.moisture.w[node[2]] = s.moisture.w[node[3]] = kCrackAir;
-  s.water.initial_kg = total_water_kg(s);
+  s.water.initial_kg = total_water_kg(s.moisture);
   const double w1 = s.moisture.w[node[0]], w2 = s.moisture.w[node[1]], length = 0.005;
 
-  const double dt = stable_moisture_step(s, 0.9);
-  moisture_step(s, dt);
+  const double dt = stable_moisture_step(s.moisture, s.moisture_elements, 0.9);
+  moisture_step(s.nodes, dt, s.moisture_elements, s.moisture, s.water);
   const double face_kg = kCrackH * (kCrackAir - 0.5 * (w1 + w2)) * length * kThickness * dt;  // Eq. 10
   CHECK(s.moisture.boundary_inflow[node[0]] == Approx(0.5 * kCrackH * (kCrackAir - w1) * length * kThickness).epsilon(1e-15));
   CHECK(s.moisture.boundary_inflow[node[1]] == Approx(0.5 * kCrackH * (kCrackAir - w2) * length * kThickness).epsilon(1e-15));
   CHECK(s.moisture.boundary_inflow[node[2]] == 0.0);
   CHECK(s.moisture.boundary_inflow[node[3]] == 0.0);
   CHECK(s.water.net_in_kg + s.water.net_in_carry == Approx(face_kg).epsilon(1e-15));
-  CHECK(total_water_kg(s) - s.water.initial_kg == Approx(face_kg).epsilon(1e-12));  // the difference loses digits
-  CHECK(water_balance_error(s) < 1e-15);
+  CHECK(total_water_kg(s.moisture) - s.water.initial_kg == Approx(face_kg).epsilon(1e-12));  // the difference loses digits
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-15);
 }
 
 TEST_CASE("a crack tip stays one node and takes in through both faces (Eqs. 14-17)", "[moisture][crack]") {
@@ -222,7 +224,8 @@ TEST_CASE("a crack tip stays one node and takes in through both faces (Eqs. 14-1
   REQUIRE(s.moisture.term_offset[i + 1] - s.moisture.term_offset[i] == 2);  // a half of each face
   randomize_moisture(s);
   const double w_tip = s.moisture.w[i];
-  moisture_step(s, stable_moisture_step(s, 0.9));
+  moisture_step(s.nodes, stable_moisture_step(s.moisture, s.moisture_elements, 0.9), s.moisture_elements, s.moisture,
+                s.water);
   // Eqs. 15-16 with the tip's own w (doc/physics.md "Cracks and moisture"): two halves of 5 mm faces.
   CHECK(s.moisture.boundary_inflow[i] == Approx(kCrackH * (kCrackAir - w_tip) * 0.005 * kThickness).epsilon(1e-15));
 }
@@ -237,9 +240,10 @@ TEST_CASE("crack faces exchange the same whether the crack is in the deck or bre
   CHECK(s.moisture.term_kind.empty());
   const std::vector<index_t> old_mnode = s.nodes.mnode;
   const std::vector<double> old_w = s.moisture.w;
-  break_joints_along_cracks(s, precracked);
+  break_joints_along_cracks(s.nodes, precracked.cracks, s.joints);
   group_moisture_nodes(s.joints, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
-  remap_moisture_nodes(s, intact, old_mnode, old_w);
+  remap_moisture_nodes({s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges}, intact, old_mnode, old_w,
+                       s.moisture);
   REQUIRE(expected.moisture.term_kind.size() == 4 * 3);  // three broken joints, four halves each
   CHECK(s.moisture.term_offset == expected.moisture.term_offset);
   CHECK(s.moisture.term_kind == expected.moisture.term_kind);
@@ -249,8 +253,8 @@ TEST_CASE("crack faces exchange the same whether the crack is in the deck or bre
   CHECK(s.moisture.boundary_node == expected.moisture.boundary_node);
 
   randomize_moisture(s);
-  s.water.initial_kg = total_water_kg(s);
-  advance_to(s, intact, 1.0e6, stable_moisture_step(s, 0.9));
-  CHECK(std::abs(mean_moisture(s) - kCrackAir) < 1e-3);  // the air in the cracks has drawn the soil to w_e
-  CHECK(water_balance_error(s) < 1e-14);
+  s.water.initial_kg = total_water_kg(s.moisture);
+  advance_to(s, intact, 1.0e6, stable_moisture_step(s.moisture, s.moisture_elements, 0.9));
+  CHECK(std::abs(mean_moisture(s.moisture) - kCrackAir) < 1e-3);  // the air in the cracks has drawn the soil to w_e
+  CHECK(water_balance_error(s.moisture, s.water) < 1e-14);
 }

@@ -13,7 +13,6 @@
 
 #include "tests/test_support.h"
 #include "ycore/state/blocked_sum.h"
-#include "ycore/solid/mechanics.h"
 #include "ycore/driver/setup.h"
 
 using namespace ydry;

@@ -10,8 +10,10 @@
 #include <random>
 #include <regex>
 #include <sstream>
+#include <type_traits>
 
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/energies.h"
+#include "ycore/state/state_fields.h"
 
 namespace ydry_test {
 
@@ -31,62 +33,29 @@ const std::vector<std::string> kCrackingLayer = {
 
 namespace {
 
+// A field of the state as doubles: a number, or an array of numbers, flags or enumerators.
 template <class T>
-std::vector<double> as_doubles(const std::vector<T>& v) {
-  return {v.begin(), v.end()};
+std::vector<double> as_doubles(const T& value) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return {double(value)};
+  } else {
+    std::vector<double> out;
+    out.reserve(value.size());
+    for (const auto v : value) out.push_back(double(v));
+    return out;
+  }
 }
 
 }  // namespace
 
 Snapshot state_snapshot(const ydry::State& s) {
+  Snapshot snapshot;
+  const auto take = [&](const std::string& name, const auto& value) { snapshot[name] = as_doubles(value); };
+  ydry::for_each_history_field(s, take);
+  ydry::for_each_topology_field(s, take);
   const ydry::Energies e = ydry::energies(s);
-  const ydry::MoistureNodes& m = s.moisture;
-  const ydry::Contact& c = s.contact;
-  Snapshot snapshot = {
-      {"x", s.nodes.x},
-      {"y", s.nodes.y},
-      {"vx", s.nodes.vx},
-      {"vy", s.nodes.vy},
-      {"shrinkage strain", s.triangles.shrinkage_strain},
-      {"stress xx", s.triangles.sxx},
-      {"stress yy", s.triangles.syy},
-      {"stress xy", s.triangles.sxy},
-      {"moisture w", m.w},
-      {"moisture node of each corner", as_doubles(s.nodes.mnode)},
-      {"tie group of each corner", as_doubles(s.nodes.tie_group)},
-      {"moisture node corners", as_doubles(m.corner_offset)},
-      {"moisture node corner list", as_doubles(m.corner)},
-      {"moisture node dry mass", m.dry_mass},
-      {"moisture node fixed w", m.fixed_w},
-      {"moisture terms", as_doubles(m.term_offset)},
-      {"moisture term areas", m.term_area},
-      {"moisture term rates", m.term_rate},
-      {"moisture term levels", m.term_level},
-      {"moisture boundary nodes", as_doubles(m.boundary_node)},
-      {"joint damage", s.joints.damage},
-      {"joint broken", as_doubles(s.joints.broken)},
-      {"joint work", s.joints.work},
-      {"joint force", s.joints.force},
-      {"contact surface edges", as_doubles(c.surface_edge)},
-      {"contact surface nodes", as_doubles(c.surface_node)},
-      {"contact pair nodes", as_doubles(c.pair_node)},
-      {"contact pair edges", as_doubles(c.pair_edge)},
-      {"contact pairs of each node", as_doubles(c.node_pairs)},
-      {"contact gather offsets", as_doubles(c.gather_offset)},
-      {"contact gather entries", as_doubles(c.gather_entry)},
-      {"contact pair slip", c.pair_slip},
-      {"contact pair force", c.pair_force},
-      {"contact built at x", c.x_built},
-      {"contact built at y", c.y_built},
-      {"contact work", {c.work_J}},
-      {"energies", {e.kinetic_J, e.elastic_J, e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J,
-                    e.gravity_work_J}},
-      {"water", {s.water.initial_kg, s.water.net_in_kg, s.water.net_in_carry, s.water.gross_kg}},
-      {"mechanics", {s.mechanics.unrelaxed_s, s.mechanics.last_residual, double(s.mechanics.capped_relaxations)}},
-      {"time and steps", {s.time_s, double(s.mechanics.steps), double(s.coupling_steps), double(c.builds)}}};
-  for (const ydry::MoistureTermKind kind : m.term_kind) snapshot["moisture term kinds"].push_back(double(kind));
-  for (const ydry::MechanicsBoundary& b : s.mechanics_boundaries)
-    snapshot["boundary " + b.name] = {b.reaction_x, b.reaction_y, b.work_J};
+  snapshot["energies"] = {e.kinetic_J, e.elastic_J, e.joint_work_J, e.fracture_J, e.contact_work_J,
+                          e.external_work_J, e.gravity_work_J};
   return snapshot;
 }
 

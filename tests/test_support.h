@@ -37,16 +37,15 @@ ydry::Deck block_deck(TempDir& dir, const std::string& pattern, const std::vecto
 // The Peron deck on its 40 mm cousin tests/data/notched_layer.msh (642 triangles: soil on a
 // rigid notched base, in contact and with friction from the start), the soil made to crack
 // early (shrinkage coefficient 0.4, gf_I 0.02 J/m^2) and the relaxations kept short
-// (tolerance 1e-4, cap 3000 steps), joints at 100 E and contact at 10 E (the Peron deck's
-// penalties before session 23; at its 10 E and E no joint breaks by 3000 s): the first joint
+// (tolerance 1e-4, cap 3000 steps), joints at 100 E and contact at 10 E (stiffer than the
+// Peron deck's 10 E and E, at which no joint breaks by 3000 s): the first joint
 // breaks by 2000 s, three by 3000 s, in some 10,000 steps; 105 coupling steps of 29.2 s,
 // rows every 1000 s, frames every 1500 s.
 extern const char* const kPeronDeck;
 extern const std::vector<std::string> kCrackingLayer;
 
-// A state's arrays by name, flags, indices and counts as doubles: every array a run changes,
-// what is rebuilt from the broken joints (moisture nodes and their terms, tie groups, contact
-// surfaces and pair index), and the energies.
+// A state's history and topology fields by name (ycore/state/state_fields.h), flags, indices
+// and counts as doubles, and its energies.
 using Snapshot = std::map<std::string, std::vector<double>>;
 Snapshot state_snapshot(const ydry::State& state);
 

@@ -23,9 +23,9 @@ TEST_CASE("a cracking run ends in a bitwise identical state on 1 and 2 threads",
     state[threads - 1] = state_snapshot(s);
   });
   // It means something: joints broke, and the contacts carried load and slipped.
-  const std::vector<double>& broken = state[0]["joint broken"];
+  const std::vector<double>& broken = state[0]["joints.broken"];
   CHECK(std::count(broken.begin(), broken.end(), 1.0) >= 1);
-  CHECK(state[0]["contact work"][0] > 0.0);
+  CHECK(state[0]["contact.work_J"][0] > 0.0);
   for (const auto& [name, values] : state[0]) {
     INFO(name);
     CHECK(same_bits(values, state[1][name]));

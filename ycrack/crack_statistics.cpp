@@ -27,12 +27,11 @@ bool faces_up(const Nodes& n, index_t c) {
 // boundary (an edge of one triangle only), facing up or not, or on an interface between
 // materials (an edge two triangles share without a joint). A joint sits on the edge starting
 // at its node 0 (first triangle) and at its node 2 (second triangle).
-std::vector<std::uint8_t> surface_kinds(const State& s, index_t nvertices) {
-  const Nodes& n = s.nodes;
+std::vector<std::uint8_t> surface_kinds(const Nodes& n, const Joints& joints, index_t nvertices) {
   std::vector<std::uint8_t> jointed(n.size(), 0);
-  for (std::size_t j = 0; j < s.joints.size(); ++j) {
-    jointed[s.joints.node[4 * j]] = 1;
-    jointed[s.joints.node[4 * j + 2]] = 1;
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    jointed[joints.node[4 * j]] = 1;
+    jointed[joints.node[4 * j + 2]] = 1;
   }
   const auto edge_key = [&](index_t c) {
     const index_t a = n.vertex[c], b = n.vertex[corner_node(triangle_of(c), (c % 3 + 1) % 3)];
@@ -58,12 +57,12 @@ struct Layer {
   double bottom_y0 = std::numeric_limits<double>::infinity();
   double top_y0 = -std::numeric_limits<double>::infinity();
 };
-std::vector<Layer> material_layers(const State& s) {
-  std::vector<Layer> layers(s.material_names.size());
-  for (index_t c = 0; c < s.nodes.size(); ++c) {
-    Layer& l = layers[s.triangles.material[triangle_of(c)]];
-    l.bottom_y0 = std::min(l.bottom_y0, s.nodes.y0[c]);
-    l.top_y0 = std::max(l.top_y0, s.nodes.y0[c]);
+std::vector<Layer> material_layers(const Nodes& n, const Triangles& triangles, std::size_t materials) {
+  std::vector<Layer> layers(materials);
+  for (index_t c = 0; c < n.size(); ++c) {
+    Layer& l = layers[triangles.material[triangle_of(c)]];
+    l.bottom_y0 = std::min(l.bottom_y0, n.y0[c]);
+    l.top_y0 = std::max(l.top_y0, n.y0[c]);
   }
   return layers;
 }
@@ -117,8 +116,8 @@ std::vector<Crack> find_all_cracks(const State& s) {
   for (std::size_t j = 0; j < joints.size(); ++j)
     if (joints.broken[j]) has_broken[find_root(parent, n.vertex[joints.node[4 * j]])] = 1;
 
-  const std::vector<std::uint8_t> surface = surface_kinds(s, nvertices);
-  const std::vector<Layer> layers = material_layers(s);
+  const std::vector<std::uint8_t> surface = surface_kinds(n, joints, nvertices);
+  const std::vector<Layer> layers = material_layers(n, s.triangles, s.material_names.size());
   // Cracks numbered in the order of their first open joint.
   std::vector<index_t> crack_of_root(nvertices, kNoIndex);
   std::vector<Crack> cracks;

@@ -18,20 +18,19 @@ double distance_to_segment(double px, double py, const CrackSegmentDeck& c) {
 
 }  // namespace
 
-void break_joints_along_cracks(State& s, const Deck& deck) {
-  const Nodes& n = s.nodes;
-  for (const CrackSegmentDeck& crack : deck.cracks) {
+void break_joints_along_cracks(const Nodes& n, const std::vector<CrackSegmentDeck>& cracks, Joints& joints) {
+  for (const CrackSegmentDeck& crack : cracks) {
     const double length = std::hypot(crack.to[0] - crack.from[0], crack.to[1] - crack.from[1]);
     double covered = 0.0;
-    for (std::size_t j = 0; j < s.joints.size(); ++j) {
-      const index_t a = s.joints.node[4 * j], b = s.joints.node[4 * j + 1];
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const index_t a = joints.node[4 * j], b = joints.node[4 * j + 1];
       const double h = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
       const double tolerance = 1e-6 * h;
       if (distance_to_segment(n.x0[a], n.y0[a], crack) > tolerance ||
           distance_to_segment(n.x0[b], n.y0[b], crack) > tolerance)
         continue;
       covered += h;
-      s.joints.broken[j] = 1;
+      joints.broken[j] = 1;
     }
     if (covered < (1.0 - 1e-6) * length) {
       std::ostringstream msg;

@@ -8,8 +8,7 @@
 
 namespace ydry {
 
-std::vector<SurfacePoint> surface_profile(const State& s, const std::vector<index_t>& edges) {
-  const Nodes& n = s.nodes;
+std::vector<SurfacePoint> surface_profile(const Nodes& n, const std::vector<index_t>& edges) {
   std::vector<index_t> corners(edges);
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());

@@ -16,12 +16,13 @@ struct SurfacePoint {
 };
 
 // The points of the surface made of `edges` (corner pairs, as State::boundary_edges holds
-// them). A point is a mesh vertex of the surface, or one side of it where a crack reaches it:
-// the vertex's surface corners that nodes.tie_group keeps together (tie_corners must be up to
-// date). Surface edges join points into segments, so the two sides of a crack lie on
-// different segments. Ordered by x0, then y0, then segment; segments are numbered in the
-// order of their first point, so at a crack the left side (lower segment) comes first.
-std::vector<SurfacePoint> surface_profile(const State& state, const std::vector<index_t>& edges);
+// them), from the nodes' initial and current positions. A point is a mesh vertex of the
+// surface, or one side of it where a crack reaches it: the vertex's surface corners that
+// nodes.tie_group keeps together (tie_corners must be up to date). Surface edges join points
+// into segments, so the two sides of a crack lie on different segments. Ordered by x0, then
+// y0, then segment; segments are numbered in the order of their first point, so at a crack
+// the left side (lower segment) comes first.
+std::vector<SurfacePoint> surface_profile(const Nodes& nodes, const std::vector<index_t>& edges);
 
 extern const char* const kSurfaceCsvHeader;
 

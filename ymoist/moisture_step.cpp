@@ -2,11 +2,12 @@
 // their own corners' inflows, then each moisture node gathers its corners and boundary terms
 // in a fixed (CSR) order. So there are no races, no atomics, and the result is bitwise the
 // same for any number of threads.
+#include "ymoist/moisture_step.h"
+
 #include <cmath>
 #include <limits>
 
 #include "ycore/state/blocked_sum.h"
-#include "ymoist/moisture.h"
 
 namespace ydry {
 namespace {
@@ -32,9 +33,8 @@ inline void compensated_add(double& sum, double& carry, double x) {
 
 }  // namespace
 
-double stable_moisture_step(const State& s, double safety) {
-  const MoistureNodes& m = s.moisture;
-  const std::vector<double>& K = s.moisture_elements.conductance;
+double stable_moisture_step(const MoistureNodes& m, const MoistureElements& elements, double safety) {
+  const std::vector<double>& K = elements.conductance;
   double dt = std::numeric_limits<double>::infinity();
   for (index_t i = 0; i < m.size(); ++i) {
     if (!std::isnan(m.fixed_w[i])) continue;  // prescribed, never integrated
@@ -52,12 +52,12 @@ double stable_moisture_step(const State& s, double safety) {
   return safety * dt;
 }
 
-void moisture_step(State& s, double dt) {
-  MoistureNodes& m = s.moisture;
-  const std::vector<index_t>& mnode = s.nodes.mnode;
-  const double* K = s.moisture_elements.conductance.data();
-  double* corner_inflow = s.moisture_elements.corner_inflow.data();
-  const std::int64_t nt = static_cast<std::int64_t>(s.triangles.size());
+void moisture_step(const Nodes& nodes, double dt, MoistureElements& elements, MoistureNodes& m,
+                   WaterBalance& wb) {
+  const std::vector<index_t>& mnode = nodes.mnode;
+  const double* K = elements.conductance.data();
+  double* corner_inflow = elements.corner_inflow.data();
+  const std::int64_t nt = static_cast<std::int64_t>(nodes.size() / 3);  // 3 corners per triangle
   const std::int64_t nm = static_cast<std::int64_t>(m.size());
 
   // Eq. 4 per triangle: inflow into corner a = -sum_b K_ab w_b; the three sum to zero (Eq. 8).
@@ -72,7 +72,9 @@ void moisture_step(State& s, double dt) {
     corner_inflow[c0 + 2] = -(Kt[2] * w0 + Kt[4] * w1 + Kt[5] * w2);
   }
 
-  // Eqs. 5-7 per moisture node, plus its boundary terms.
+  // Eqs. 5-7 per moisture node: the inflows of its corners' triangles (Eq. 5; Eq. 9 and Eq.
+  // 14 where a crack has split or ends at the node, as its corners are only those on its side)
+  // plus its boundary and crack-face terms (Eq. 13, Eq. 17), over its dry mass (Eq. 6).
 #pragma omp parallel for schedule(static) if (std::size_t(nm) > parallel_minimum)
   for (std::int64_t i = 0; i < nm; ++i) {
     double inflow = 0.0;
@@ -91,7 +93,6 @@ void moisture_step(State& s, double dt) {
   }
 
   // Book the boundary water in a fixed order (few nodes; serial keeps it thread-invariant).
-  WaterBalance& wb = s.water;
   for (const index_t i : m.boundary_node) {
     const double kg = m.boundary_inflow[i] * dt;
     compensated_add(wb.net_in_kg, wb.net_in_carry, kg);
@@ -99,24 +100,22 @@ void moisture_step(State& s, double dt) {
   }
 }
 
-double total_water_kg(const State& s) {
+double total_water_kg(const MoistureNodes& m) {
   double sum = 0.0, carry = 0.0;
-  for (index_t i = 0; i < s.moisture.size(); ++i)
-    compensated_add(sum, carry, s.moisture.w[i] * s.moisture.dry_mass[i]);
+  for (index_t i = 0; i < m.size(); ++i) compensated_add(sum, carry, m.w[i] * m.dry_mass[i]);
   return sum + carry;
 }
 
-double mean_moisture(const State& s) {
+double mean_moisture(const MoistureNodes& m) {
   double dry = 0.0;
-  for (const double md : s.moisture.dry_mass) dry += md;
-  return dry > 0.0 ? total_water_kg(s) / dry : std::numeric_limits<double>::quiet_NaN();
+  for (const double md : m.dry_mass) dry += md;
+  return dry > 0.0 ? total_water_kg(m) / dry : std::numeric_limits<double>::quiet_NaN();
 }
 
-double water_balance_error(const State& s) {
-  const WaterBalance& wb = s.water;
+double water_balance_error(const MoistureNodes& m, const WaterBalance& wb) {
   const double scale = std::max(wb.initial_kg, wb.gross_kg);
   if (scale == 0.0) return 0.0;
-  return std::abs(total_water_kg(s) - wb.initial_kg - (wb.net_in_kg + wb.net_in_carry)) / scale;
+  return std::abs(total_water_kg(m) - wb.initial_kg - (wb.net_in_kg + wb.net_in_carry)) / scale;
 }
 
 }  // namespace ydry

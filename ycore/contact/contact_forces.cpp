@@ -1,12 +1,13 @@
-// The contact force kernel (see ycore/contact/contact.h). One pass over the corners that have
-// candidate pairs; each writes only its own pairs' forces and slips, so the result is the
-// same on any number of threads.
+// The contact force kernel (contact_forces.h). One pass over the corners that have candidate
+// pairs; each writes only its own pairs' forces and slips, so the result is the same on any
+// number of threads (doc/threading.md "Gather, not scatter").
+#include "ycore/contact/contact_forces.h"
+
 #include <cmath>
 
-#include "ycore/state/blocked_sum.h"
-#include "ycore/contact/contact.h"
 #include "ycore/contact/contact_geometry.h"
 #include "ycore/contact/contact_search.h"
+#include "ycore/state/blocked_sum.h"
 
 namespace ydry {
 namespace {
@@ -47,13 +48,11 @@ bool idle_corner(const Nodes& n, const Contact& c, index_t first, index_t last) 
 
 }  // namespace
 
-void contact_forces(State& s, double dt, FrictionUpdate friction) {
-  Contact& c = s.contact;
+void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Ownership& ownership,
+                    Contact& c, std::size_t material_count, double dt, FrictionUpdate friction) {
   if (c.penalty_pa <= 0.0) return;
-  if (contact_pairs_stale(s)) build_contact_pairs(s);
-  const Nodes& n = s.nodes;
-  const std::size_t nm = s.material_names.size();
-  const double half_penalty = 0.5 * c.penalty_pa * s.mechanics.thickness_m;
+  if (contact_pairs_stale(n, c)) build_contact_pairs(n, ownership, c);
+  const double half_penalty = 0.5 * c.penalty_pa * mech.thickness_m;
   const double damping = 2.0 * c.damping_ratio;
   const std::size_t corners = c.node_pairs.size() - 1;
   // Blocks of 256 corners: the Peron deck has 3,528 contact corners, one block of the
@@ -111,8 +110,8 @@ void contact_forces(State& s, double dt, FrictionUpdate friction) {
     // step or only at equilibrium (FrictionUpdate).
     double& slip = c.pair_slip[active];
     slip += (vx * at.tx + vy * at.ty) * dt;
-    const double cap = c.tan_friction[s.triangles.material[triangle_of(i)] * nm +
-                                      s.triangles.material[triangle_of(e)]] * normal;
+    const double cap = c.tan_friction[tri.material[triangle_of(i)] * material_count +
+                                      tri.material[triangle_of(e)]] * normal;
     double tangential = -stiffness * slip;
     if (std::fabs(tangential) > cap) {
       tangential = std::copysign(cap, tangential);
@@ -130,6 +129,9 @@ void contact_forces(State& s, double dt, FrictionUpdate friction) {
 
 // A force evaluation of zero length: nothing moves, no work is booked, and every slip past its
 // cap slides back to it.
-void commit_friction_slip(State& s) { contact_forces(s, 0.0, FrictionUpdate::every_step); }
+void commit_friction_slip(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Ownership& ownership,
+                          Contact& c, std::size_t material_count) {
+  contact_forces(n, tri, mech, ownership, c, material_count, 0.0, FrictionUpdate::every_step);
+}
 
 }  // namespace ydry

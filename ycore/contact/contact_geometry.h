@@ -1,4 +1,4 @@
-// The narrow phase of contact (ycore/contact/contact.h): a surface corner against one surface edge.
+// The narrow phase of contact (contact_forces.h): a surface corner against one surface edge.
 #pragma once
 
 #include <cmath>

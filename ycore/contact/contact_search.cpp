@@ -2,12 +2,13 @@
 // corners within two buffers of it. Pairs come out sorted by (corner, edge) whatever the
 // thread count, carry the friction slip of the pairs they continue, and are indexed per
 // corner for the force kernel and per receiving node for the gather.
+#include "ycore/contact/contact_search.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
 #include "ycore/state/blocked_sum.h"
-#include "ycore/contact/contact_search.h"
 
 namespace ydry {
 namespace {
@@ -31,9 +32,7 @@ struct CellGrid {
 
 // Bins the surface corners into square cells of about the mean surface edge length (at least
 // 4 buffers), with no more cells than about 4 per corner.
-CellGrid bin_surface_nodes(const State& s) {
-  const Nodes& n = s.nodes;
-  const Contact& c = s.contact;
+CellGrid bin_surface_nodes(const Nodes& n, const Contact& c) {
   CellGrid g;
   double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY, edge_sum = 0.0;
   for (const index_t i : c.surface_node) {
@@ -65,8 +64,7 @@ CellGrid bin_surface_nodes(const State& s) {
 }
 
 // Whether corner i may touch the edge starting at corner e at all.
-bool may_touch(const State& s, index_t i, index_t e) {
-  const Nodes& n = s.nodes;
+bool may_touch(const Nodes& n, index_t i, index_t e) {
   const index_t f = next_corner(e);
   if (triangle_of(i) == triangle_of(e)) return false;
   if (n.tie_group[i] == n.tie_group[e] || n.tie_group[i] == n.tie_group[f]) return false;
@@ -76,9 +74,7 @@ bool may_touch(const State& s, index_t i, index_t e) {
 
 }  // namespace
 
-void build_contact_pairs(State& s) {
-  Nodes& n = s.nodes;
-  Contact& c = s.contact;
+void build_contact_pairs(const Nodes& n, const Ownership& ownership, Contact& c) {
   // A non-finite position has no cell (casting it to an index is undefined): the pairs stay
   // as they are, and the relaxation reports the state after this force evaluation.
   if (!std::all_of(c.surface_node.begin(), c.surface_node.end(),
@@ -88,7 +84,7 @@ void build_contact_pairs(State& s) {
   struct Pair { index_t node, edge; };
   std::vector<Pair> pairs;
   if (!c.surface_node.empty()) {
-    const CellGrid g = bin_surface_nodes(s);
+    const CellGrid g = bin_surface_nodes(n, c);
     for (const index_t e : c.surface_edge) {
       const index_t f = next_corner(e);
       const double reach = 2.0 * c.buffer_m;
@@ -99,7 +95,7 @@ void build_contact_pairs(State& s) {
           const std::size_t cell = std::size_t(cy * g.nx + cx);
           for (index_t k = g.offset[cell]; k < g.offset[cell + 1]; ++k) {
             const index_t i = c.surface_node[g.item[k]];
-            if (may_touch(s, i, e) && segment_distance2(n.x[i], n.y[i], n.x[e], n.y[e], n.x[f], n.y[f]) <= reach2)
+            if (may_touch(n, i, e) && segment_distance2(n.x[i], n.y[i], n.x[e], n.y[e], n.x[f], n.y[f]) <= reach2)
               pairs.push_back({i, e});
           }
         }
@@ -129,7 +125,7 @@ void build_contact_pairs(State& s) {
     c.pair_node[k] = pairs[k].node;
     c.pair_edge[k] = pairs[k].edge;
   }
-  index_contact_pairs(s);
+  index_contact_pairs(n, ownership, c);
   for (std::size_t k = 0; k < c.surface_node.size(); ++k) {
     c.x_built[k] = n.x[c.surface_node[k]];
     c.y_built[k] = n.y[c.surface_node[k]];
@@ -137,15 +133,14 @@ void build_contact_pairs(State& s) {
   ++c.builds;
 }
 
-void index_contact_pairs(State& s) {
-  Contact& c = s.contact;
+void index_contact_pairs(const Nodes& n, const Ownership& ownership, Contact& c) {
   const std::size_t np = c.pair_node.size();
   c.node_pairs.clear();
   for (std::size_t k = 0; k < np; ++k)
     if (k == 0 || c.pair_node[k] != c.pair_node[k - 1]) c.node_pairs.push_back(index_t(k));
   c.node_pairs.push_back(index_t(np));
   // Each thread takes the corners in its own range of nodes (ycore/state/ownership.h).
-  const std::vector<std::size_t>& node_begin = s.ownership.node_begin;
+  const std::vector<std::size_t>& node_begin = ownership.node_begin;
   c.corner_owner_begin.resize(node_begin.size());
   for (std::size_t k = 0; k < node_begin.size(); ++k)
     c.corner_owner_begin[k] = std::size_t(
@@ -154,7 +149,7 @@ void index_contact_pairs(State& s) {
         c.node_pairs.begin());
 
   // Per receiving node, the pair forces it gathers, in pair order (a counting sort).
-  c.gather_offset.assign(s.nodes.size() + 1, 0);
+  c.gather_offset.assign(n.size() + 1, 0);
   const auto receiver = [&](std::size_t k, int slot) {
     return slot == 0 ? c.pair_node[k] : slot == 1 ? c.pair_edge[k] : next_corner(c.pair_edge[k]);
   };
@@ -167,14 +162,12 @@ void index_contact_pairs(State& s) {
     for (int slot = 0; slot < 3; ++slot) c.gather_entry[fill[receiver(k, slot)]++] = index_t(3 * k + slot);
 }
 
-bool contact_pairs_stale(const State& s) {
-  const Contact& c = s.contact;
-  const Nodes& n = s.nodes;
+bool contact_pairs_stale(const Nodes& n, const Contact& c) {
   if (c.node_pairs.empty()) return true;  // never built
   const double buffer2 = c.buffer_m * c.buffer_m;
   // On one thread: the Peron deck's 2,800 to 3,500 surface corners take a few microseconds,
-  // less than a parallel region costs (as one on two threads, the check took 7 us a step,
-  // bench/RESULTS.md session 24).
+  // less than a parallel region costs (as one on two threads, the check takes 7 us a step:
+  // bench/RESULTS.md).
   for (std::size_t k = 0; k < c.surface_node.size(); ++k) {
     const index_t i = c.surface_node[k];
     const double dx = n.x[i] - c.x_built[k], dy = n.y[i] - c.y_built[k];

@@ -1,11 +1,11 @@
 // Contact set-up: the penalty, friction per material pair, the broad-phase buffer, and the
 // surfaces (triangle edges with no joint or a broken one).
+#include "ycore/contact/contact_setup.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include "ycore/contact/contact.h"
 
 namespace ydry {
 namespace {
@@ -17,10 +17,10 @@ namespace {
 // the deepest point of the overlap is a convex vertex of one of them or a crossing of their
 // edges, never a vertex on a straight side, so the other body's corners find the contact
 // there (and see one straight surface, so their force is continuous across its vertices). As
-// a contactor it switched: where the Peron soil rests on its rigid base with coinciding
-// vertices, a base corner on the land fell now on one soil edge, now on the next, now between
-// them, as the joint that holds the soil's corners there together gave by nanometres, and
-// the relaxations stalled (bench/RESULTS.md, sessions 17 and 19).
+// a contactor it would switch: where the Peron soil rests on its rigid base with coinciding
+// vertices, a base corner on the land falls now on one soil edge, now on the next, now between
+// them, as the joint that holds the soil's corners there together gives by nanometres, and
+// the relaxations stall (doc/physics.md "Contact and friction").
 std::vector<std::uint8_t> fixed_flat_corners(const Nodes& n) {
   const std::size_t nn = n.size();
   std::vector<double> interior_angle(nn, 0.0);  // per tie group, at its lowest corner
@@ -38,16 +38,16 @@ std::vector<std::uint8_t> fixed_flat_corners(const Nodes& n) {
 
 }  // namespace
 
-void init_contact(State& s, const Deck& deck) {
-  if (s.nodes.tie_group.size() != s.nodes.size()) throw std::logic_error("init_contact: corners not tied yet");
-  Contact& c = s.contact;
+void init_contact(const Nodes& n, const Joints& joints, const std::vector<std::string>& material_names,
+                  const Deck& deck, Contact& c) {
+  if (n.tie_group.size() != n.size()) throw std::logic_error("init_contact: corners not tied yet");
   c.penalty_pa = deck.contact_penalty_pa.value_or(0.0);
   c.damping_ratio = deck.contact_damping;
-  const std::size_t nm = s.material_names.size();
+  const std::size_t nm = material_names.size();
   c.tan_friction.assign(nm * nm, 0.0);
   for (const auto& [pair, degrees] : deck.friction_deg) {
     const auto id = [&](const std::string& name) {
-      return std::size_t(std::find(s.material_names.begin(), s.material_names.end(), name) - s.material_names.begin());
+      return std::size_t(std::find(material_names.begin(), material_names.end(), name) - material_names.begin());
     };
     const std::size_t a = id(pair.first), b = id(pair.second);
     if (a == nm || b == nm) continue;  // a deck material the mesh does not use (warned about)
@@ -56,21 +56,19 @@ void init_contact(State& s, const Deck& deck) {
   // A tenth of the shortest edge: contacts move little between two builds, and the 2-buffer
   // shell around an edge holds few corners besides the ones that can touch it.
   double shortest = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+  for (std::size_t i = 0; i < n.size(); ++i) {
     const index_t j = next_corner(index_t(i));
-    shortest = std::min(shortest, std::hypot(s.nodes.x0[j] - s.nodes.x0[i], s.nodes.y0[j] - s.nodes.y0[i]));
+    shortest = std::min(shortest, std::hypot(n.x0[j] - n.x0[i], n.y0[j] - n.y0[i]));
   }
   c.buffer_m = 0.1 * shortest;
   c.work_J = 0.0;
-  refresh_contact_surfaces(s);
+  refresh_contact_surfaces(n, joints, c);
 }
 
-void refresh_contact_surfaces(State& s) {
-  Contact& c = s.contact;
-  const Joints& jt = s.joints;
-  const std::size_t nn = s.nodes.size();
+void refresh_contact_surfaces(const Nodes& n, const Joints& jt, Contact& c) {
+  const std::size_t nn = n.size();
   // An edge is a surface unless an intact joint covers it. The joint's first triangle's edge
-  // starts at its node 0, the second's at its node 2 (DESIGN section 3, joint node order).
+  // starts at its node 0, the second's at its node 2 (Joints::node, ycore/state/state.h).
   c.is_surface_edge.assign(nn, 1);
   for (std::size_t j = 0; j < jt.size(); ++j)
     if (!jt.broken[j]) c.is_surface_edge[jt.node[4 * j]] = c.is_surface_edge[jt.node[4 * j + 2]] = 0;
@@ -78,7 +76,7 @@ void refresh_contact_surfaces(State& s) {
   for (index_t e = 0; e < nn; ++e)
     if (c.is_surface_edge[e]) c.surface_edge.push_back(e);
   c.surface_node.clear();
-  const std::vector<std::uint8_t> receiver_only = fixed_flat_corners(s.nodes);
+  const std::vector<std::uint8_t> receiver_only = fixed_flat_corners(n);
   for (index_t i = 0; i < nn; ++i)
     if ((c.is_surface_edge[i] || c.is_surface_edge[previous_corner(i)]) && !receiver_only[i]) c.surface_node.push_back(i);
   // Forces a broad phase at the next force evaluation; the pairs stay for their history.
@@ -86,10 +84,10 @@ void refresh_contact_surfaces(State& s) {
   c.y_built.assign(c.surface_node.size(), std::numeric_limits<double>::infinity());
 }
 
-double contact_stiffness_bound(const State& s) {
+double contact_stiffness_bound(const Mechanics& mech, const Contact& c) {
   // Normal and tangential stiffness p_n t each (two surface edges of p_n t / 2), counted once
   // as the node of a pair and once more for the pairs whose edge it ends (Gershgorin row).
-  return 8.0 * s.contact.penalty_pa * s.mechanics.thickness_m;
+  return 8.0 * c.penalty_pa * mech.thickness_m;
 }
 
 }  // namespace ydry

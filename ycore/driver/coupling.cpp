@@ -2,11 +2,14 @@
 
 #include <algorithm>
 
-#include "ycore/contact/contact.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/contact/contact_setup.h"
+#include "ycore/solid/joint_damage.h"
+#include "ycore/solid/relaxation.h"
 #include "ycore/state/stage_timing.h"
 #include "ycrack/node_sharing.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_setup.h"
+#include "ymoist/moisture_step.h"
+#include "ymoist/shrinkage.h"
 
 namespace ydry {
 namespace {
@@ -27,16 +30,18 @@ void split_across_broken_joints(State& s, const Deck& deck) {
     const std::vector<index_t> old_mnode = s.nodes.mnode;
     const std::vector<double> old_w = s.moisture.w;
     group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
-    remap_moisture_nodes(s, deck, old_mnode, old_w);
+    remap_moisture_nodes({s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges}, deck, old_mnode, old_w,
+                         s.moisture);
   } else {
     tie_corners(s.joints, s.nodes);
   }
-  refresh_contact_surfaces(s);
+  refresh_contact_surfaces(s.nodes, s.joints, s.contact);
 }
 
 double coupling_step_limit(const State& s, const Deck& deck) {
   double step = deck.output_interval_s;
-  if (any_moisture(s)) step = std::min(step, stable_moisture_step(s, deck.moisture_safety));
+  if (any_moisture(s))
+    step = std::min(step, stable_moisture_step(s.moisture, s.moisture_elements, deck.moisture_safety));
   if (deck.max_coupling_step_s > 0.0) step = std::min(step, deck.max_coupling_step_s);
   return step;
 }
@@ -48,7 +53,7 @@ bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
   else
     relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation}, dt);
   StageClock cracking;
-  const bool broke = commit_joint_damage(s) > 0;
+  const bool broke = commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
   if (broke) split_across_broken_joints(s, deck);
   cracking.lap(s.wall.cracking);
   return broke;
@@ -56,12 +61,12 @@ bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
 
 bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   StageClock clock;
-  if (any_moisture(s)) moisture_step(s, dt);                        // (1) Eqs. 1-17
+  if (any_moisture(s)) moisture_step(s.nodes, dt, s.moisture_elements, s.moisture, s.water);  // (1) Eqs. 1-17
   clock.lap(s.wall.moisture);
   if (!deck.mechanics) return false;
   s.mechanics.unrelaxed_s += dt;
   if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
-  update_shrinkage_strain(s);                                       // (2) Eqs. 18-19
+  update_shrinkage_strain(s.nodes, s.moisture, s.materials, s.triangles);  // (2) Eqs. 18-19
   clock.lap(s.wall.moisture);
   const bool broke = equilibrate_and_break(s, deck, s.mechanics.unrelaxed_s);  // (3), (4)
   s.mechanics.unrelaxed_s = 0.0;

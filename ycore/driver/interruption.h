@@ -1,5 +1,5 @@
 // SIGINT and SIGTERM during a run: the first one sets a flag that the driver checks after
-// every coupling step (it then writes a checkpoint and exits 130, DESIGN section 5); the
+// every coupling step (it then writes a checkpoint and exits 130, doc/architecture.md "The run"); the
 // handler is then reset, so a second signal ends the process at once. Every output file is
 // written under a temporary name and renamed, so even then none is left half-written.
 #pragma once

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "version.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/energies.h"
 #include "ycore/solid/strength_heterogeneity.h"
 #include "ycore/state/stage_timing.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_step.h"
 
 namespace ydry {
 namespace {
@@ -79,7 +79,8 @@ void log_restart(Log& log, const State& state, const std::string& checkpoint_pat
 void log_end(Log& log, const State& state, const Deck& deck, double wall_s, const std::string& outputs) {
   std::ostringstream tail;
   tail << "done: t = " << state.time_s << " s, " << state.coupling_steps << " coupling steps, "
-       << "mean moisture " << mean_moisture(state) << ", water balance error " << water_balance_error(state)
+       << "mean moisture " << mean_moisture(state.moisture) << ", water balance error "
+       << water_balance_error(state.moisture, state.water)
        << ", wall " << wall_s << " s\n";
   if (deck.mechanics) {
     const Energies e = energies(state);

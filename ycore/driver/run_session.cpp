@@ -99,7 +99,7 @@ void RunSession::write_row(bool completed) {
   const State& s = state_;
   if (s.time_s >= double(record_.next_frame) * deck_.output_interval_s * (1.0 - 1e-12) || completed) {
     write_frame(frames_, s, s.time_s);
-    if (top_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s, *top_)));
+    if (top_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *top_)));
     record_.next_frame = std::uint64_t(std::lround(std::floor(s.time_s / deck_.output_interval_s * (1.0 + 1e-12)))) + 1;
   }
   const CrackCensus census = deck_.mechanics ? take_crack_census(s, deck_.crack_width_threshold_m) : CrackCensus{};

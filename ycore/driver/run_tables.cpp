@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "version.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/energies.h"
 #include "ycore/state/stage_timing.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_step.h"
 
 namespace ydry {
 
@@ -36,9 +36,9 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool moisture = s.moisture.size() > 0;
   std::vector<double> row = {s.time_s,
-                             moisture ? mean_moisture(s) : nan,
-                             moisture ? s.water.initial_kg - total_water_kg(s) : nan,
-                             moisture ? water_balance_error(s) : nan};
+                             moisture ? mean_moisture(s.moisture) : nan,
+                             moisture ? s.water.initial_kg - total_water_kg(s.moisture) : nan,
+                             moisture ? water_balance_error(s.moisture, s.water) : nan};
   if (!deck.mechanics) {
     row.resize(kSeriesColumns.size(), nan);
     return row;

@@ -5,27 +5,30 @@
 #include "ycore/driver/coupling.h"
 #include "ycore/input/input_error.h"
 #include "ycore/output/checkpoint.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/mechanics_setup.h"
 #include "ycore/state/build_state.h"
 #include "ycrack/node_sharing.h"
 #include "ycrack/precracks.h"
-#include "ymoist/moisture.h"
+#include "ymoist/moisture_setup.h"
+#include "ymoist/shrinkage.h"
 
 namespace ydry {
 
 State prepare_state(const Deck& deck) {
   State s = build_state(load_mesh(deck), deck);
-  break_joints_along_cracks(s, deck);
+  break_joints_along_cracks(s.nodes, deck.cracks, s.joints);
   const std::vector<std::uint8_t> has_moisture = triangles_with_moisture(s, deck);
   const bool moisture = std::any_of(has_moisture.begin(), has_moisture.end(), [](std::uint8_t h) { return h != 0; });
   if (!moisture && !deck.mechanics)
     throw InputError(deck.path + ": materials: no material of the mesh has moisture_conductivity, "
                                  "so a moisture-only run has nothing to compute");
   group_moisture_nodes(s.joints, has_moisture, s.nodes, s.moisture);
-  if (moisture) init_moisture(s, deck);
+  if (moisture)
+    init_moisture({s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges}, deck, s.moisture,
+                  s.moisture_elements, s.water);
   if (deck.mechanics) {
     init_mechanics(s, deck);
-    update_shrinkage_strain(s);
+    update_shrinkage_strain(s.nodes, s.moisture, s.materials, s.triangles);
   }
   return s;
 }

@@ -7,59 +7,10 @@
 #include "version.h"
 #include "ycore/output/reactions_csv.h"
 #include "ycore/contact/contact_search.h"
+#include "ycore/state/state_fields.h"
 
 namespace ydry {
 namespace {
-
-// Every number and array of the state that a run changes and that nothing rebuilds from the
-// deck, the mesh and the broken joints: positions and velocities (a relaxation predicts from
-// the last step's), the stresses and eigenstrains, joint damage and work and the joints' last
-// forces (their work is a trapezoid over the step), moisture, the water, energy and step
-// ledgers, the supports' reactions and work, and the contact pairs with their friction slip,
-// last forces and the positions of the last broad phase (which decide the next one).
-// Scratch that every step overwrites before reading (node forces, moisture inflows, the
-// relaxation's start positions) is left out.
-template <class S, class Field>
-void for_each_state_field(S& s, Field&& field) {
-  field("time_s", s.time_s);
-  field("moisture_steps", s.coupling_steps);
-  field("nodes.x", s.nodes.x);
-  field("nodes.y", s.nodes.y);
-  field("nodes.vx", s.nodes.vx);
-  field("nodes.vy", s.nodes.vy);
-  field("triangles.shrinkage_strain", s.triangles.shrinkage_strain);
-  field("triangles.sxx", s.triangles.sxx);
-  field("triangles.syy", s.triangles.syy);
-  field("triangles.sxy", s.triangles.sxy);
-  field("joints.broken", s.joints.broken);
-  field("joints.damage", s.joints.damage);
-  field("joints.work", s.joints.work);
-  field("joints.force", s.joints.force);
-  field("moisture.w", s.moisture.w);
-  field("water.initial_kg", s.water.initial_kg);
-  field("water.net_in_kg", s.water.net_in_kg);
-  field("water.net_in_carry", s.water.net_in_carry);
-  field("water.gross_kg", s.water.gross_kg);
-  field("mechanics.unrelaxed_s", s.mechanics.unrelaxed_s);
-  field("mechanics.last_residual", s.mechanics.last_residual);
-  field("mechanics.steps", s.mechanics.steps);
-  field("mechanics.capped_relaxations", s.mechanics.capped_relaxations);
-  field("mechanics.gravity_work_J", s.mechanics.gravity_work_J);
-  for (std::size_t b = 0; b < s.mechanics_boundaries.size(); ++b) {
-    const std::string prefix = "mechanics.boundary[" + std::to_string(b) + "].";
-    field(prefix + "reaction_x", s.mechanics_boundaries[b].reaction_x);
-    field(prefix + "reaction_y", s.mechanics_boundaries[b].reaction_y);
-    field(prefix + "work_J", s.mechanics_boundaries[b].work_J);
-  }
-  field("contact.pair_node", s.contact.pair_node);
-  field("contact.pair_edge", s.contact.pair_edge);
-  field("contact.pair_slip", s.contact.pair_slip);
-  field("contact.pair_force", s.contact.pair_force);
-  field("contact.x_built", s.contact.x_built);
-  field("contact.y_built", s.contact.y_built);
-  field("contact.work_J", s.contact.work_J);
-  field("contact.builds", s.contact.builds);
-}
 
 template <class R, class Field>
 void for_each_record_field(R& r, Field&& field) {
@@ -120,7 +71,7 @@ std::string checkpoint_bytes(const Deck& deck, const std::string& deck_text, con
   const auto put = [&](const std::string& name, const auto& value) { out.put(name, value); };
   out.put("deck.toml", deck_text);
   out.put("setup_fingerprint", setup_fingerprint(state));
-  for_each_state_field(state, put);
+  for_each_history_field(state, put);
   for_each_record_field(record, put);
   std::vector<double> rows;
   for (const std::vector<double>& row : record.series.rows) rows.insert(rows.end(), row.begin(), row.end());
@@ -198,7 +149,7 @@ void restore_state(State& s, const Checkpoint& c) {
   for (auto* v : {&s.contact.pair_node, &s.contact.pair_edge}) v->resize(pairs.size());
   s.contact.pair_slip.resize(pairs.size());
   s.contact.pair_force.resize(6 * pairs.size());
-  for_each_state_field(s, [&](const std::string& name, auto& value) {
+  for_each_history_field(s, [&](const std::string& name, auto& value) {
     if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
       c.take(name, value);
     } else {
@@ -215,7 +166,7 @@ void restore_state(State& s, const Checkpoint& c) {
   require_finite(c, s.nodes.vy, "nodes.vy");
   require_finite(c, s.moisture.w, "moisture.w");
   check_contact_pairs(s, c);
-  if (s.contact.builds > 0) index_contact_pairs(s);  // a broad phase has run: the pairs are current
+  if (s.contact.builds > 0) index_contact_pairs(s.nodes, s.ownership, s.contact);  // a broad phase has run: the pairs are current
 }
 
 RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& s) {

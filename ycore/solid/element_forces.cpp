@@ -1,29 +1,29 @@
-// Constant-strain triangles, co-rotational (DESIGN section 4, fdem-notes section 2).
+// Constant-strain triangles, co-rotational (doc/physics.md "Elements").
 //
 // F = [x1-x0 | x2-x0] inv0 is split as F = R U (polar); Hooke's law acts on the Biot strain
 // U - I in the rotated frame, minus the shrinkage stress 3 K* eps_sh (Eq. 19):
 //   T = lambda tr(U - I) I + 2 mu (U - I) - 3 K* eps_sh I,   P = R T (first Piola-Kirchhoff).
 // A rigid rotation gives U = I and no stress; at small strain T is the linear-elastic stress.
-// The shrinkage case of paper 4.3 is exact in this law (the strain is linear in the stretch),
+// The free shrinkage of Eqs. 21-22 is exact in this law (the strain is linear in the stretch),
 // and P F^T = R T U R^T is symmetric because T is a polynomial in U, so the nodal forces
 // conserve angular as well as linear momentum.
 //
 // The kernel takes each thread's triangles (ycore/state/ownership.h) in runs of one material, so
 // that the material's constants are the same over a run and the loop over it vectorises:
 // every array is passed as its own restrict pointer (GCC does not vectorise the loop through
-// the State's vectors, whose data it cannot tell apart) and the three corners of triangle e are
-// nodes 3e, 3e+1, 3e+2. A relaxation step moves the nodes in the same pass, a cache-sized
-// piece of a run at a time (kMovedTogether), so that the positions integration writes are read
-// while still in the cache, and one sweep of the node arrays and one parallel region a step are
-// saved (on a mesh larger than the cache the step waits on memory; the gain was within the
-// noise of this 2-core host: bench/RESULTS.md, session 20). The stress is not needed by the
-// forces, only at equilibrium (element_stresses), so the step does not store it.
+// the std::vectors of Nodes and Triangles, whose data it cannot tell apart) and the three
+// corners of triangle e are nodes 3e, 3e+1, 3e+2. A relaxation step moves the nodes in the same
+// pass, a cache-sized piece of a run at a time (kMovedTogether), so that the positions
+// integration writes are read while still in the cache, and one sweep of the node arrays and
+// one parallel region a step are saved (on a mesh larger than the cache the step waits on
+// memory; the gain is within the noise of a 2-core host: bench/RESULTS.md). The stress is not
+// needed by the forces, only at equilibrium (element_stresses), so the step does not store it.
+#include "ycore/solid/element_forces.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "ycore/solid/corotational.h"
-#include "ycore/solid/mechanics.h"
-#include "ycore/solid/node_integration.h"
 #include "ycore/solid/vector_clones.h"
 
 namespace ydry {
@@ -86,55 +86,54 @@ constexpr std::size_t kMovedTogether = 512;
 
 // Runs body(begin, end, material) over the calling thread's triangles, in runs of one material.
 template <class Body>
-void for_each_material_run(const State& s, Body body) {
-  const Triangles& tri = s.triangles;
-  const IndexRange owned = owned_range(s.ownership.triangle_begin, tri.size());
+void for_each_material_run(const Triangles& tri, const Ownership& ownership,
+                           const std::vector<MaterialModel>& materials, Body body) {
+  const IndexRange owned = owned_range(ownership.triangle_begin, tri.size());
   for (std::size_t begin = owned.begin, end; begin < owned.end; begin = end) {
     const std::uint16_t id = tri.material[begin];
     for (end = begin + 1; end < owned.end && tri.material[end] == id;) ++end;
-    body(begin, end, s.materials[id]);
+    body(begin, end, materials[id]);
   }
 }
 
 // Moves the nodes of triangles [first, last), adding each one's v_new . f to the lanes of its
 // ownership slot (slot_begin: the table's triangle_begin; one slot without one).
-void integrate_triangles(State& s, std::size_t first, std::size_t last, const VelocityUpdate& update,
+void integrate_triangles(Nodes& n, std::size_t first, std::size_t last, const VelocityUpdate& update,
                          const std::vector<std::size_t>& slot_begin, std::vector<PowerLanes>& slot_lanes) {
   if (slot_lanes.size() == 1) {
-    integrate_node_range(s, 3 * first, 3 * last, update, slot_lanes[0]);
+    integrate_node_range(n, 3 * first, 3 * last, update, slot_lanes[0]);
     return;
   }
   std::size_t k = std::size_t(std::upper_bound(slot_begin.begin(), slot_begin.end(), first) - slot_begin.begin()) - 1;
   for (std::size_t a = first; a < last; a = std::min(last, slot_begin[++k])) {
     const std::size_t b = std::min(last, slot_begin[k + 1]);
-    integrate_node_range(s, 3 * a, 3 * b, update, slot_lanes[k]);
+    integrate_node_range(n, 3 * a, 3 * b, update, slot_lanes[k]);
   }
 }
 
 }  // namespace
 
-double element_forces(State& s, const VelocityUpdate* move_first) {
-  Nodes& n = s.nodes;
-  Triangles& tri = s.triangles;
-  const double thickness = s.mechanics.thickness_m;
-  const double gx = s.mechanics.gravity_x, gy = s.mechanics.gravity_y;
+double element_forces(const Triangles& tri, const Mechanics& mech, const Ownership& ownership,
+                      const std::vector<MaterialModel>& materials, Nodes& n, const VelocityUpdate* move_first) {
+  const double thickness = mech.thickness_m;
+  const double gx = mech.gravity_x, gy = mech.gravity_y;
   // The integration's v_new . f per ownership slot, each summed in node order whatever cut
   // the team makes (PowerLanes), then over the slots in theirs: the same sum on any number of
   // threads. Without an ownership table the whole mesh is one slot, on one thread. Reused by
   // the calling thread, so a step allocates nothing; bound to a reference so that the team
   // writes the caller's buffer.
-  const std::vector<std::size_t>& slot_begin = s.ownership.triangle_begin;
+  const std::vector<std::size_t>& slot_begin = ownership.triangle_begin;
   const bool slots = slot_begin.size() >= 2 && slot_begin.back() == tri.size();
   thread_local std::vector<PowerLanes> buffer;
   buffer.assign(slots ? slot_begin.size() - 1 : 1, PowerLanes{});
   std::vector<PowerLanes>& slot_lanes = buffer;
 #pragma omp parallel if (tri.size() > parallel_minimum && slots)
-  for_each_material_run(s, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
+  for_each_material_run(tri, ownership, materials, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
     for (std::size_t first = begin, last; first < end; first = last) {
       last = std::min(end, first + kMovedTogether);
       // A rigid material's nodes are fixed: the integration would keep every value (a third
       // of the Peron deck's nodes).
-      if (move_first && !m.rigid) integrate_triangles(s, first, last, *move_first, slot_begin, slot_lanes);
+      if (move_first && !m.rigid) integrate_triangles(n, first, last, *move_first, slot_begin, slot_lanes);
       if (m.mechanical) {
         material_run_forces(first, last, n.x.data(), n.y.data(), tri.inv0.data(), tri.area0.data(),
                             tri.mass_kg.data(), tri.shrinkage_strain.data(), n.fx.data(), n.fy.data(), m, thickness,
@@ -150,11 +149,10 @@ double element_forces(State& s, const VelocityUpdate* move_first) {
   return power;
 }
 
-void element_stresses(State& s) {
-  const Nodes& n = s.nodes;
-  Triangles& tri = s.triangles;
+void element_stresses(const Nodes& n, const Ownership& ownership, const std::vector<MaterialModel>& materials,
+                      Triangles& tri) {
 #pragma omp parallel if (tri.size() > parallel_minimum)
-  for_each_material_run(s, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
+  for_each_material_run(tri, ownership, materials, [&](std::size_t begin, std::size_t end, const MaterialModel& m) {
     if (m.mechanical)
       material_run_stresses(begin, end, n.x.data(), n.y.data(), tri.inv0.data(), tri.shrinkage_strain.data(),
                             tri.sxx.data(), tri.syy.data(), tri.sxy.data(), m);

@@ -1,7 +1,7 @@
-// The solid's energy ledger (logged, and in series.csv).
-#include "ycore/state/blocked_sum.h"
+#include "ycore/solid/energies.h"
+
 #include "ycore/solid/corotational.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/state/blocked_sum.h"
 
 namespace ydry {
 

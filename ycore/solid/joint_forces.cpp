@@ -1,4 +1,4 @@
-// Cohesive joint forces (DESIGN section 4, fdem-notes section 1).
+// Cohesive joint forces (doc/physics.md "Joints").
 //
 // Tractions are integrated at the two ends and the middle (Simpson weights 1/6, 2/3, 1/6 of
 // the initial length). The nodal forces are the exact derivative of the joint's virtual work
@@ -19,11 +19,12 @@
 // The vector laws do the same operations in the same order as the full law where they apply,
 // and this file is compiled without FMA contraction (CMakeLists.txt), so the result is the full
 // law's, bit for bit (tests/test_mechanics.cpp).
+#include "ycore/solid/joint_forces.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "ycore/solid/joint_law.h"
-#include "ycore/solid/mechanics.h"
 #include "ycore/solid/vector_clones.h"
 
 namespace ydry {
@@ -113,8 +114,8 @@ template <class Traction>
 
 // Joints are numbered with their first triangle, so a joint's second triangle lies ahead in
 // the node arrays: on a mesh larger than the cache its nodes' lines are first touched here and
-// in store_chunk, and the loads waited on memory (bench/RESULTS.md, session 18). They are
-// asked for this many joints ahead.
+// in store_chunk, and the loads wait on memory unless they are asked for this many joints
+// ahead (bench/RESULTS.md).
 constexpr std::size_t kPrefetchJoints = 24;
 
 // Joint i of the chunk, with the coordinates of its nodes 0..3 and its strength, into d.
@@ -132,10 +133,8 @@ void add_softened(SoftenedChunk& d, int i, const double x[4], const double y[4],
 
 // Sorts the chunk's joints into their passes: the undamaged ones of a breakable material into
 // c, the damaged ones into d.
-void gather_chunk(const State& s, std::size_t first, int count, ChunkForces& out, PrePeakChunk& c,
-                  SoftenedChunk& d) {
-  const Nodes& n = s.nodes;
-  const Joints& jt = s.joints;
+void gather_chunk(const Nodes& n, const Joints& jt, const std::vector<MaterialModel>& materials, std::size_t first,
+                  int count, ChunkForces& out, PrePeakChunk& c, SoftenedChunk& d) {
   c.count = d.count = 0;
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
@@ -143,7 +142,7 @@ void gather_chunk(const State& s, std::size_t first, int count, ChunkForces& out
       const index_t ahead = jt.node[4 * (j + kPrefetchJoints) + 2];
       for (const double* a : {&n.x[ahead], &n.y[ahead], &n.vx[ahead], &n.vy[ahead]}) __builtin_prefetch(a);
     }
-    const MaterialModel& m = s.materials[jt.material[j]];
+    const MaterialModel& m = materials[jt.material[j]];
     if (jt.broken[j] || !m.breakable) {
       out.pass[i] = jt.broken[j] ? JointPass::broken : JointPass::scalar;
       continue;
@@ -189,8 +188,8 @@ YDRY_AVX2_CLONE void pre_peak_forces(PrePeakChunk& c, double thickness) {
 }
 
 // The pre-peak law's forces into the chunk, or, for a joint past a peak, the joint into d.
-void take_pre_peak(const State& s, std::size_t first, const PrePeakChunk& c, ChunkForces& out, SoftenedChunk& d) {
-  const Joints& jt = s.joints;
+void take_pre_peak(const Joints& jt, const std::vector<MaterialModel>& materials, std::size_t first,
+                   const PrePeakChunk& c, ChunkForces& out, SoftenedChunk& d) {
   for (int p = 0; p < c.count; ++p) {
     const int i = c.joint[p];
     if (c.past_peak[p] > 0.0) {
@@ -199,7 +198,7 @@ void take_pre_peak(const State& s, std::size_t first, const PrePeakChunk& c, Chu
       const double y[4] = {c.y[0][p], c.y[1][p], c.y[2][p], c.y[3][p]};
       const JointStrength strength{c.k[p], c.tensile[p], c.cohesion[p], c.peak_opening[p]};
       out.pass[i] = JointPass::softened;
-      add_softened(d, i, x, y, strength, c.h0[p], s.materials[jt.material[j]], &jt.damage[3 * j]);
+      add_softened(d, i, x, y, strength, c.h0[p], materials[jt.material[j]], &jt.damage[3 * j]);
       continue;
     }
     for (int k = 0; k < 8; ++k) out.fresh[k][i] = c.fresh[k][p];
@@ -241,9 +240,8 @@ void take_softened(const SoftenedChunk& d, ChunkForces& out) {
 // Work over the step by the trapezoid of the forces before and after it (exact for a linear
 // spring, so a vibrating joint books no spurious work), then the new forces; the full law
 // where the chunk says so. Broken joints carry nothing and take no work.
-void store_chunk(State& s, std::size_t first, int count, const ChunkForces& c, double dt) {
-  const Nodes& n = s.nodes;
-  Joints& jt = s.joints;
+void store_chunk(const Nodes& n, const Mechanics& mech, const std::vector<MaterialModel>& materials, Joints& jt,
+                 std::size_t first, int count, const ChunkForces& c, double dt) {
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
     double* f = &jt.force[8 * j];
@@ -253,7 +251,7 @@ void store_chunk(State& s, std::size_t first, int count, const ChunkForces& c, d
     }
     double fresh[8];
     if (c.pass[i] == JointPass::scalar)
-      joint_nodal_forces(s, j, fresh);
+      joint_nodal_forces(n, jt, mech, materials, j, fresh);
     else
       for (int k = 0; k < 8; ++k) fresh[k] = c.fresh[k][i];
     const index_t* node = &jt.node[4 * j];
@@ -267,10 +265,9 @@ void store_chunk(State& s, std::size_t first, int count, const ChunkForces& c, d
 
 }  // namespace
 
-void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
-  const Nodes& n = s.nodes;
-  const Joints& jt = s.joints;
-  const MaterialModel& m = s.materials[jt.material[j]];
+void joint_nodal_forces(const Nodes& n, const Joints& jt, const Mechanics& mech,
+                        const std::vector<MaterialModel>& materials, std::size_t j, double out[8]) {
+  const MaterialModel& m = materials[jt.material[j]];
   if (jt.broken[j] || !m.mechanical) {
     for (int k = 0; k < 8; ++k) out[k] = 0.0;
     return;
@@ -280,22 +277,23 @@ void joint_nodal_forces(const State& s, std::size_t j, double out[8]) {
                                    n.y[node[1]], n.y[node[2]], n.y[node[3]]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
-  joint_forces_with(f, h0, s.mechanics.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
+  joint_forces_with(f, h0, mech.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
     const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
     normal = t.normal, shear = t.shear;
     return 0.0;
   }, out);
 }
 
-void joint_forces(State& s, double dt) {
-  const double thickness = s.mechanics.thickness_m, curve_area = softening_curve_area();
-  const std::size_t nj = s.joints.size();
-  const std::vector<index_t>& runs = s.joints.mechanical_runs;
+void joint_forces(const Nodes& n, const Mechanics& mech, const Ownership& ownership,
+                  const std::vector<MaterialModel>& materials, Joints& jt, double dt) {
+  const double thickness = mech.thickness_m, curve_area = softening_curve_area();
+  const std::size_t nj = jt.size();
+  const std::vector<index_t>& runs = jt.mechanical_runs;
 #pragma omp parallel if (nj > parallel_minimum)
   {
     // The thread's joints of a material with mechanics: its range cut by the runs (a few
     // hundred on the Peron mesh, one where no material is rigid) that begin before its end.
-    const IndexRange owned = owned_range(s.ownership.joint_begin, nj);
+    const IndexRange owned = owned_range(ownership.joint_begin, nj);
     ChunkForces forces;
     PrePeakChunk pre_peak;
     SoftenedChunk softened;
@@ -304,12 +302,12 @@ void joint_forces(State& s, double dt) {
       const std::size_t end = std::min<std::size_t>(runs[r + 1], owned.end);
       for (std::size_t first = begin; first < end; first += kJointChunk) {
         const int count = int(std::min<std::size_t>(kJointChunk, end - first));
-        gather_chunk(s, first, count, forces, pre_peak, softened);
+        gather_chunk(n, jt, materials, first, count, forces, pre_peak, softened);
         pre_peak_forces(pre_peak, thickness);
-        take_pre_peak(s, first, pre_peak, forces, softened);
+        take_pre_peak(jt, materials, first, pre_peak, forces, softened);
         softened_forces(softened, thickness, curve_area);
         take_softened(softened, forces);
-        store_chunk(s, first, count, forces, dt);
+        store_chunk(n, mech, materials, jt, first, count, forces, dt);
       }
     }
   }

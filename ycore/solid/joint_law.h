@@ -1,6 +1,6 @@
-// The cohesive joint (DESIGN section 4, fdem-notes section 1): Munjiza's traction law at a
-// point of a 4-node joint, and the joint's kinematics, shared by the force kernel, the
-// damage commit and the crack statistics.
+// The cohesive joint (doc/physics.md "Joints"): Munjiza's traction law at a point of a
+// 4-node joint, and the joint's kinematics, shared by the force kernel, the damage commit
+// and the crack statistics.
 #pragma once
 
 #include <algorithm>

@@ -1,15 +1,17 @@
 // Setting up the solid: material constants, masses, reference geometry, joints and
-// boundary constraints (DESIGN sections 3 and 4).
+// boundary constraints (doc/deck.md; the arrays are those of ycore/state/state.h).
+#include "ycore/solid/mechanics_setup.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
-#include "ycore/state/build_state.h"
-#include "ycore/contact/contact.h"
+#include "ycore/contact/contact_setup.h"
 #include "ycore/input/input_error.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/solid/stable_step.h"
 #include "ycore/solid/strength_heterogeneity.h"
+#include "ycore/state/build_state.h"
 
 namespace ydry {
 namespace {
@@ -156,7 +158,7 @@ void set_constraints(State& s, const Deck& deck) {
     // Every corner at a vertex of the boundary, including corners of triangles that touch
     // it at that vertex only: they are the same material point, tied by stiff joints.
     std::vector<std::uint8_t> on_boundary(n.size(), 0);
-    for (const index_t i : boundary_nodes(s, bd.on, bd.where)) on_boundary[n.vertex[i]] = 1;
+    for (const index_t i : boundary_nodes(s.boundary_edges, bd.on, bd.where)) on_boundary[n.vertex[i]] = 1;
     MechanicsBoundary b;
     b.name = bd.on;
     for (std::size_t i = 0; i < n.size(); ++i)
@@ -224,60 +226,14 @@ void init_mechanics(State& s, const Deck& deck) {
   set_reference_geometry(s);
   set_joint_data(s, deck);
   set_constraints(s, deck);
-  init_contact(s, deck);
-  s.ownership = partition_for_threads(s, kOwnershipSlots);
-  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s);
-  mech.step_s = stable_mechanics_step(s, deck.mechanics_safety);
+  init_contact(s.nodes, s.joints, s.material_names, deck, s.contact);
+  s.ownership = partition_for_threads(s.triangles, s.joints, s.materials, kOwnershipSlots);
+  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s.triangles, mech, s.contact, s.materials, s.nodes);
+  mech.step_s = stable_mechanics_step(s.nodes, s.triangles, mech, s.contact, s.materials, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
   const auto [x_min, x_max] = std::minmax_element(s.nodes.x0.begin(), s.nodes.x0.end());
   const auto [y_min, y_max] = std::minmax_element(s.nodes.y0.begin(), s.nodes.y0.end());
   mech.mesh_diagonal_m = nn ? std::hypot(*x_max - *x_min, *y_max - *y_min) : 0.0;
-}
-
-std::vector<double> node_stiffness_bound(const State& s) {
-  const Nodes& n = s.nodes;
-  const double thickness = s.mechanics.thickness_m;
-  const double contact = contact_stiffness_bound(s);  // any corner may come to lie on a crack face
-  std::vector<double> bound(n.size(), 0.0);
-  for (std::size_t e = 0; e < s.triangles.size(); ++e) {
-    const MaterialModel& m = s.materials[s.triangles.material[e]];
-    if (!m.mechanical) continue;
-    const index_t i = corner_node(index_t(e), 0);
-    double edge[3];  // edge[a]: length of the edge opposite corner a
-    for (int a = 0; a < 3; ++a) {
-      const index_t p = i + (a + 1) % 3, q = i + (a + 2) % 3;
-      edge[a] = std::hypot(n.x0[q] - n.x0[p], n.y0[q] - n.y0[p]);
-    }
-    const double perimeter = edge[0] + edge[1] + edge[2];
-    for (int a = 0; a < 3; ++a) {
-      if (n.constraint[i + a] == (kFixX | kFixY)) continue;
-      // |K_ab| <= t (lambda + 2 mu) l_a l_b / (4 A0) for a CST; two components per node.
-      double k = thickness * (m.lambda + 2.0 * m.mu) * edge[a] * perimeter / (2.0 * s.triangles.area0[e]);
-      for (int slot = 0; slot < 2; ++slot)
-        if (n.joint_slot[2 * (i + a) + slot] != kNoIndex) k += m.penalty * thickness;  // row sum ~ p t
-      bound[i + a] = k + contact;
-    }
-  }
-  return bound;
-}
-
-double stable_mechanics_step(const State& s, double safety) {
-  const std::vector<double> bound = node_stiffness_bound(s);
-  double omega2_max = 0.0;
-  for (std::size_t i = 0; i < bound.size(); ++i) omega2_max = std::max(omega2_max, bound[i] / s.nodes.m[i]);
-  return omega2_max > 0.0 ? safety * 2.0 / std::sqrt(omega2_max) : 1.0;
-}
-
-void scale_node_masses_to_common_step(State& s) {
-  Nodes& n = s.nodes;
-  const std::vector<double> bound = node_stiffness_bound(s);
-  std::vector<double> omega2;
-  for (std::size_t i = 0; i < bound.size(); ++i)
-    if (bound[i] > 0.0) omega2.push_back(bound[i] / n.m[i]);
-  if (omega2.empty()) return;
-  auto median = omega2.begin() + omega2.size() / 2;
-  std::nth_element(omega2.begin(), median, omega2.end());
-  for (std::size_t i = 0; i < bound.size(); ++i) n.m[i] = std::max(n.m[i], bound[i] / *median);
 }
 
 }  // namespace ydry

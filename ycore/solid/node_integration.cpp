@@ -34,8 +34,7 @@ YDRY_AVX2_CLONE void integrate_range(std::size_t begin, std::size_t end, const s
 
 }  // namespace
 
-void integrate_node_range(State& s, std::size_t begin, std::size_t end, const VelocityUpdate& u, PowerLanes& sum) {
-  Nodes& n = s.nodes;
+void integrate_node_range(Nodes& n, std::size_t begin, std::size_t end, const VelocityUpdate& u, PowerLanes& sum) {
   double power[kMostNodesIntegrated];
   for (std::size_t first = begin, last; first < end; first = last) {
     last = std::min(end, first + kMostNodesIntegrated);

@@ -23,8 +23,8 @@ struct PowerLanes {
 // others keep their velocity and position. Adds to `power` each moved component's new velocity
 // times the force that made it, v_new . f: the adaptive damping's Rayleigh quotient needs it
 // (ycore/solid/relaxation.cpp), and here the force is read anyway. A relaxation step moves each
-// triangle's nodes just before its element forces (element_forces, ycore/solid/mechanics.h).
-void integrate_node_range(State& state, std::size_t begin, std::size_t end, const VelocityUpdate& update,
+// triangle's nodes just before its element forces (ycore/solid/element_forces.h).
+void integrate_node_range(Nodes& nodes, std::size_t begin, std::size_t end, const VelocityUpdate& update,
                           PowerLanes& power);
 
 }  // namespace ydry

@@ -1,5 +1,5 @@
 // A run that has gone numerically wrong (a non-finite force or position): caught by the
-// driver, which writes a last frame for inspection and exits 3 (DESIGN section 5).
+// driver, which writes a last frame for inspection and exits 3 (doc/architecture.md "The run").
 #pragma once
 
 #include <stdexcept>

@@ -1,4 +1,5 @@
-// Quasi-static relaxation of the solid (DESIGN section 4, step 3 of the coupling loop).
+// Quasi-static relaxation of the solid (doc/physics.md "Quasi-static equilibrium"; a step of
+// the coupling loop, doc/architecture.md "A coupling step").
 //
 // Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
 // from the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
@@ -24,18 +25,21 @@
 //
 // Only the equilibrium reached means anything; the path in pseudo-time does not. The state
 // with history is committed from the equilibrium alone: the joints' damage
-// (commit_joint_damage) and the friction's slip (FrictionUpdate::at_equilibrium), so the two
-// methods find the same equilibria where both converge.
+// (commit_joint_damage, joint_damage.h) and the friction's slip
+// (FrictionUpdate::at_equilibrium), so the two methods find the same equilibria where both
+// converge.
+#include "ycore/solid/relaxation.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
-#include "ycore/state/blocked_sum.h"
-#include "ycore/contact/contact.h"
-#include "ycore/solid/joint_law.h"
-#include "ycore/solid/mechanics.h"
+#include "ycore/contact/contact_forces.h"
+#include "ycore/solid/element_forces.h"
+#include "ycore/solid/joint_forces.h"
 #include "ycore/solid/numerical_failure.h"
+#include "ycore/state/blocked_sum.h"
 #include "ycore/state/stage_timing.h"
 
 namespace ydry {
@@ -55,10 +59,9 @@ struct ForceMeasures {
 // Adds the joint and contact forces to the node forces (through each node's joint slots and
 // contact gather list) and measures; the Rayleigh numerator's -v.f only (compute_forces adds
 // v.f_previous).
-ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
-  Nodes& n = s.nodes;
-  const std::vector<double>& jf = s.joints.force;
-  const Contact& c = s.contact;
+ForceMeasures gather_interaction_forces(const Joints& joints, const Contact& c, const Ownership& ownership, Nodes& n,
+                                        bool fire_measures) {
+  const std::vector<double>& jf = joints.force;
   const bool contact = !c.gather_offset.empty();
   const auto sums = blocked_sum<6>(n.size(), [&](std::size_t i, std::array<double, 6>& sum) {
     double fx = n.fx[i], fy = n.fy[i];
@@ -87,24 +90,24 @@ ForceMeasures gather_interaction_forces(State& s, bool fire_measures) {
     };
     if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i]);
     if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i]);
-  }, s.ownership.node_begin);
+  }, ownership.node_begin);
   return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
 }
 
 // FIRE's measures (power, f.M^-1 f) only with fire_measures. With move_first, the nodes are
 // first moved by that pseudo-step (in the element kernel's pass), which sums v.f_previous of
 // the Rayleigh numerator where it reads f_previous: so no node keeps its force of the step
-// before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md, session 25).
+// before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md).
 ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
                              const VelocityUpdate* move_first = nullptr) {
   StageClock clock;
-  const double power_before = element_forces(s, move_first);
+  const double power_before = element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes, move_first);
   clock.lap(s.wall.elements);
-  joint_forces(s, dt);
+  joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, dt);
   clock.lap(s.wall.joints);
-  contact_forces(s, dt, friction);
+  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), dt, friction);
   clock.lap(s.wall.contact);
-  ForceMeasures measures = gather_interaction_forces(s, fire_measures);
+  ForceMeasures measures = gather_interaction_forces(s.joints, s.contact, s.ownership, s.nodes, fire_measures);
   clock.lap(s.wall.gather);
   measures.rayleigh_numerator += power_before;
   return measures;
@@ -153,9 +156,7 @@ class FireSteering {
 };
 
 // Moves the driven nodes by velocity x coupling_dt.
-void move_driven_nodes(State& s, double coupling_dt, double dt) {
-  Nodes& n = s.nodes;
-  const Mechanics& mech = s.mechanics;
+void move_driven_nodes(const Mechanics& mech, Nodes& n, double coupling_dt, double dt) {
   for (std::size_t k = 0; k < mech.driven_node.size(); ++k) {
     const index_t i = mech.driven_node[k];
     n.x[i] += mech.driven_vx[k] * coupling_dt;
@@ -171,9 +172,8 @@ void move_driven_nodes(State& s, double coupling_dt, double dt) {
 // reactions at the two equilibria times the boundary's displacement (the quasi-static
 // external work, exact for a linear solid; what the damping takes out of the jump between
 // them is not work done on the solid's equilibrium path).
-void update_reactions(State& s, double coupling_dt) {
-  const Nodes& n = s.nodes;
-  for (MechanicsBoundary& b : s.mechanics_boundaries) {
+void update_reactions(const Nodes& n, std::vector<MechanicsBoundary>& boundaries, double coupling_dt) {
+  for (MechanicsBoundary& b : boundaries) {
     double rx = 0, ry = 0;
     for (const index_t i : b.nodes) {
       if (b.fix_x) rx -= n.fx[i];
@@ -186,10 +186,8 @@ void update_reactions(State& s, double coupling_dt) {
 }
 
 // Remembers where the solid starts from (for the gravity work and the velocities).
-void start_motion(State& s) {
-  Nodes& n = s.nodes;
-  Mechanics& mech = s.mechanics;
-  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
+void start_motion(const Nodes& n, const Ownership& ownership, Mechanics& mech) {
+  for_each_owned(ownership.node_begin, n.size(), [&](std::size_t i) {
     mech.x_start[i] = n.x[i];
     mech.y_start[i] = n.y[i];
   });
@@ -199,23 +197,22 @@ void start_motion(State& s) {
 // behind): drying changes the eigenstrain smoothly, so the extrapolated equilibrium leaves
 // the relaxation only the curvature of the path to remove. The joint damage and the friction
 // slip are committed from the relaxed state only, so a prediction that overshoots leaves no
-// trace. (When the friction slid at every pseudo-step, it did: a block that slid in one
-// relaxation was carried on by the next prediction and held where it was put, a ratchet
-// that walked the Peron deck's right end block 6.5 um a relaxation after the drying had
-// stopped.) Like the driven nodes' jump, the prediction is seen as a velocity by one force
+// trace. (A friction that slid at every pseudo-step would keep it: a block that slid in one
+// relaxation would be carried on by the next prediction and held where it was put, a ratchet
+// that walks a block on after the drying has stopped; doc/physics.md "Quasi-static
+// equilibrium".) Like the driven nodes' jump, the prediction is seen as a velocity by one force
 // evaluation, so the joints and contacts book its work; prescribed components start at rest.
 //
 // A node's jump is at most the contact buffer (a tenth of the shortest edge). Drying moves a
 // node microns between relaxations; a node that moved farther is not drifting but falling or
 // snapping (a fragment come loose, a crack that opened), and its motion does not go on. Carried
 // on unbounded, such a motion grows from one relaxation to the next, and a jump longer than the
-// buffer can take a node past a contact surface the broad phase never saw it near: a loose
-// triangle of the Peron deck fell through the rigid base that way (bench/RESULTS.md,
-// session 23). Within the buffer the relaxation's own pseudo-steps meet the surface.
-void predict_equilibrium(State& s, double coupling_dt, double dt) {
-  Nodes& n = s.nodes;
-  const double limit = s.contact.buffer_m;
-  for_each_owned(s.ownership.node_begin, n.size(), [&](std::size_t i) {
+// buffer can take a node past a contact surface the broad phase never saw it near (a loose
+// triangle of the Peron deck would fall through the rigid base). Within the buffer the
+// relaxation's own pseudo-steps meet the surface.
+void predict_equilibrium(const Contact& contact, const Ownership& ownership, Nodes& n, double coupling_dt, double dt) {
+  const double limit = contact.buffer_m;
+  for_each_owned(ownership.node_begin, n.size(), [&](std::size_t i) {
     double jump_x = n.constraint[i] & kFixX ? 0.0 : n.vx[i] * coupling_dt;
     double jump_y = n.constraint[i] & kFixY ? 0.0 : n.vy[i] * coupling_dt;
     const double length = std::sqrt(jump_x * jump_x + jump_y * jump_y);
@@ -253,10 +250,10 @@ void stop_runaway(const State& s) {
 // step count; makes the element stresses of the state reached.
 void finish_motion(State& s, const RelaxationResult& result, double coupling_dt) {
   stop_runaway(s);
-  element_stresses(s);
+  element_stresses(s.nodes, s.ownership, s.materials, s.triangles);
   const Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
-  update_reactions(s, coupling_dt);
+  update_reactions(n, s.mechanics_boundaries, coupling_dt);
   const auto gravity = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
     const double weight = s.triangles.mass_kg[triangle_of(index_t(i))] / 3.0;
     sum[0] += weight * (mech.gravity_x * (n.x[i] - mech.x_start[i]) + mech.gravity_y * (n.y[i] - mech.y_start[i]));
@@ -273,9 +270,9 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Nodes& n = s.nodes;
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
-  start_motion(s);
-  predict_equilibrium(s, coupling_dt, dt);
-  move_driven_nodes(s, coupling_dt, dt);
+  start_motion(n, s.ownership, mech);
+  predict_equilibrium(s.contact, s.ownership, n, coupling_dt, dt);
+  move_driven_nodes(mech, n, coupling_dt, dt);
   const bool fire_measures = controls.method == RelaxationMethod::fire;
   // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium).
   const FrictionUpdate friction = FrictionUpdate::at_equilibrium;
@@ -305,7 +302,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     result.residual = measures.ratio();
   }
   result.capped = !balanced(measures);
-  commit_friction_slip(s);
+  commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size());
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
@@ -317,8 +314,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
 }
 
 RelaxationResult move_dynamically(State& s, double coupling_dt) {
+  start_motion(s.nodes, s.ownership, s.mechanics);
   const Mechanics& mech = s.mechanics;
-  start_motion(s);
   RelaxationResult result;
   // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
   ForceMeasures measures = compute_forces(s, 0.0, FrictionUpdate::every_step);
@@ -326,7 +323,7 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
   const double dt = coupling_dt / double(substeps);
   for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
-    move_driven_nodes(s, dt, dt);
+    move_driven_nodes(mech, s.nodes, dt, dt);
     const VelocityUpdate undamped = viscous_update(0.0, dt);
     measures = compute_forces(s, dt, FrictionUpdate::every_step, false, &undamped);
     ++result.steps;
@@ -335,28 +332,6 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   result.residual = measures.ratio();
   finish_motion(s, result, coupling_dt);
   return result;
-}
-
-std::size_t commit_joint_damage(State& s) {
-  Joints& jt = s.joints;
-  const auto broke = blocked_sum<1>(jt.size(), [&](std::size_t j, std::array<double, 1>& sum) {
-    const MaterialModel& m = s.materials[jt.material[j]];
-    if (jt.broken[j] || !m.mechanical || !m.breakable) return;
-    const JointKinematics k = joint_kinematics(s.nodes, &jt.node[4 * j]);
-    int failed = 0;
-    for (int p = 0; p < 3; ++p) {
-      const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
-      double& d = jt.damage[3 * j + p];
-      const double o = a * k.opening[0] + b * k.opening[1], sl = a * k.slip[0] + b * k.slip[1];
-      d = std::max(d, cohesive_traction(m, jt.strength_factor[j], jt.length0[j], o, sl, d).damage);
-      failed += d >= 1.0;
-    }
-    if (failed >= 2) {
-      jt.broken[j] = 1;
-      sum[0] += 1.0;
-    }
-  }, s.ownership.joint_begin);
-  return std::size_t(broke[0]);
 }
 
 }  // namespace ydry

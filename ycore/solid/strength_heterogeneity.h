@@ -1,4 +1,4 @@
-// Strength heterogeneity ([materials.NAME] strength_heterogeneity, README "Strength
+// Strength heterogeneity ([materials.NAME] strength_heterogeneity, doc/physics.md "Strength
 // heterogeneity"): every joint of a breakable material carries a random factor on its tensile
 // strength and cohesion, Weibull-distributed with mean 1 and the material's coefficient of
 // variation.

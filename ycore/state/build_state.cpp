@@ -101,12 +101,12 @@ State build_state(const MeshInput& mesh, const Deck& deck) {
   return s;
 }
 
-const std::vector<index_t>& boundary_nodes(const State& state, const std::string& name,
-                                           const std::string& where) {
-  const auto it = state.boundary_edges.find(name);
-  if (it == state.boundary_edges.end()) {
+const std::vector<index_t>& boundary_nodes(const std::map<std::string, std::vector<index_t>>& boundary_edges,
+                                           const std::string& name, const std::string& where) {
+  const auto it = boundary_edges.find(name);
+  if (it == boundary_edges.end()) {
     std::string names;
-    for (const auto& kv : state.boundary_edges) names += (names.empty() ? "" : ", ") + kv.first;
+    for (const auto& kv : boundary_edges) names += (names.empty() ? "" : ", ") + kv.first;
     throw InputError(where + ": the mesh has no boundary named \"" + name + "\" (it has: " +
                      (names.empty() ? "none" : names) + ")");
   }

@@ -1,6 +1,10 @@
 // From the deck's mesh to the exploded FDEM state.
 #pragma once
 
+#include <map>
+#include <string>
+#include <vector>
+
 #include "ycore/input/deck.h"
 #include "ycore/state/mesh_input.h"
 #include "ycore/state/state.h"
@@ -15,8 +19,9 @@ MeshInput load_mesh(const Deck& deck);
 // Moisture nodes are left to ycrack and ymoist.
 State build_state(const MeshInput& mesh, const Deck& deck);
 
-// The node pairs of a named boundary; InputError at `where` if the mesh has no such name.
-const std::vector<index_t>& boundary_nodes(const State& state, const std::string& name,
-                                           const std::string& where);
+// The node pairs of a named boundary (State::boundary_edges); InputError at `where` if the
+// mesh has no such name.
+const std::vector<index_t>& boundary_nodes(const std::map<std::string, std::vector<index_t>>& boundary_edges,
+                                           const std::string& name, const std::string& where);
 
 }  // namespace ydry

@@ -1,17 +1,19 @@
 // The threads' ranges of the solid (ycore/state/ownership.h).
+#include "ycore/state/ownership.h"
+
 #include <algorithm>
 
-#include "ycore/solid/mechanics.h"
+#include "ycore/state/state.h"
 
 namespace ydry {
 
-Ownership partition_for_threads(const State& s, std::size_t slots) {
+Ownership partition_for_threads(const Triangles& tri, const Joints& joints,
+                                const std::vector<MaterialModel>& materials, std::size_t slots) {
   constexpr double kRigidShare = 0.1;  // a rigid triangle's work against a deformable one's
-  const Triangles& tri = s.triangles;
   const std::size_t nt = tri.size();
   std::vector<double> work(nt + 1, 0.0);  // prefix sums
   for (std::size_t t = 0; t < nt; ++t)
-    work[t + 1] = work[t] + (s.materials[tri.material[t]].mechanical ? 1.0 : kRigidShare);
+    work[t + 1] = work[t] + (materials[tri.material[t]].mechanical ? 1.0 : kRigidShare);
   Ownership o;
   o.triangle_begin.assign(slots + 1, nt);
   o.triangle_begin[0] = 0;
@@ -21,8 +23,8 @@ Ownership partition_for_threads(const State& s, std::size_t slots) {
   // A joint belongs with its first triangle (joints are numbered in that order; counting
   // them keeps the ranges a cut of [0, joints) whatever the order).
   std::vector<std::size_t> joints_in(slots, 0);
-  for (std::size_t j = 0; j < s.joints.size(); ++j) {
-    const std::size_t t = triangle_of(s.joints.node[4 * j]);
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const std::size_t t = triangle_of(joints.node[4 * j]);
     const auto after = std::upper_bound(o.triangle_begin.begin(), o.triangle_begin.end(), t);
     ++joints_in[std::size_t(after - o.triangle_begin.begin()) - 1];
   }

@@ -6,11 +6,11 @@
 // loop would move most of it between cores at every loop.
 //
 // The ranges are cut once, into kOwnershipSlots slots of about the same estimated work
-// (partition_for_threads): the rigid base of the Peron mesh, whose triangles cost almost
-// nothing, lies together at the end of the numbering. A team of T threads shares the slots
+// (partition_for_threads): a rigid triangle, which costs almost nothing, counts as a tenth of
+// a deformable one, wherever the Hilbert order puts it. A team of T threads shares the slots
 // out evenly (240 is divisible by 1-6, 8, 10, 12, 15 and 16), and every index is done
-// exactly once whatever T is. No result depends on the ranges: each triangle, node or joint is computed by one
-// thread alone, and sums go over fixed blocks (blocked_sum.h).
+// exactly once whatever T is. No result depends on the ranges: each triangle, node or joint
+// is computed by one thread alone, and sums go over fixed blocks (blocked_sum.h).
 #pragma once
 
 #include <algorithm>
@@ -38,6 +38,16 @@ struct Ownership {
   std::vector<std::size_t> triangle_begin, node_begin, joint_begin;
   std::size_t slots() const { return triangle_begin.empty() ? 0 : triangle_begin.size() - 1; }
 };
+
+struct Triangles;  // ycore/state/state.h
+struct Joints;
+struct MaterialModel;
+
+// Cuts triangles, nodes and joints into `slots` ranges of about equal work: a rigid triangle
+// is counted as a tenth of a deformable one (it has no element or joint forces, only its
+// nodes' passes), and a joint goes with its first triangle.
+Ownership partition_for_threads(const Triangles& triangles, const Joints& joints,
+                                const std::vector<MaterialModel>& materials, std::size_t slots);
 
 struct IndexRange {
   std::size_t begin = 0, end = 0;

@@ -1,10 +1,11 @@
-// The whole simulation state as structs of arrays (DESIGN section 3). Indices are 32-bit.
+// The whole simulation state as structs of arrays, one per entity (doc/architecture.md
+// "State and lifetimes"). Indices are 32-bit.
 //
 // The mechanical mesh is exploded, as in Y-Code: every triangle owns its three nodes, and
 // node 3t+a is corner a (counter-clockwise) of triangle t, so a triangle's nodes are implied
 // by its index. Coincident corners of neighbouring triangles of one material are tied by a
 // 4-node joint on their common edge. A moisture node is a connected set of coincident
-// corners under intact joints (ycrack builds them).
+// corners under intact joints (ycrack/node_sharing.h builds them).
 #pragma once
 
 #include <cstdint>
@@ -28,64 +29,87 @@ inline index_t triangle_of(index_t node) { return node / 3; }
 inline index_t next_corner(index_t node) { return node % 3 == 2 ? node - 2 : node + 1; }
 inline index_t previous_corner(index_t node) { return node % 3 == 0 ? node + 2 : node - 1; }
 
+// Every field below has one of five lifetimes (doc/architecture.md "State and lifetimes"),
+// marked at its group:
+//   constant  set up from the deck and the mesh, never changed by a run;
+//   history   changed by a run and not derivable: checkpointed (state_fields.h);
+//   topology  rebuilt from the broken joints after every split (and on a restart);
+//   scratch   overwritten before it is read, every step or every call;
+//   totals    ledgers summed since t = 0: checkpointed with the history.
+
 struct Nodes {                    // [3 * triangles] each
+  // constant
   std::vector<double> x0, y0;     // initial position, m
-  std::vector<double> x, y;       // current position, m
-  std::vector<double> vx, vy;     // velocity, m/s
   std::vector<index_t> vertex;    // the mesh vertex this corner was made from
-  std::vector<index_t> mnode;     // its moisture node; kNoIndex in a material without moisture
-  std::vector<double> fx, fy;     // net force, N (elements, joints, gravity)
   std::vector<double> m;          // inertial mass of the pseudo-time relaxation, kg
   std::vector<std::uint8_t> constraint;  // kFixX | kFixY: component prescribed (fixed or driven)
   // [2 * nodes]: 4 j + k for each joint j of a material with mechanics whose node k this is
   // (a corner lies on two edges of its triangle, so at most two); kNoIndex where there is
   // none. Joint forces are gathered through it, so no node is written by two threads.
   std::vector<index_t> joint_slot;
-  // The lowest corner tied to this one through intact joints (ycrack, after every breakage):
-  // corners of one tie group are one material point, and never in contact with each other.
+  // history
+  std::vector<double> x, y;       // current position, m
+  std::vector<double> vx, vy;     // velocity, m/s
+  // topology
+  std::vector<index_t> mnode;     // its moisture node; kNoIndex in a material without moisture
+  // The lowest corner tied to this one through intact joints: corners of one tie group are
+  // one material point, and never in contact with each other.
   std::vector<index_t> tie_group;
+  // scratch
+  std::vector<double> fx, fy;     // net force, N (elements, joints, contact, gravity)
   std::size_t size() const { return x0.size(); }
 };
 constexpr std::uint8_t kFixX = 1, kFixY = 2;
 
 struct Triangles {                // [triangles] each
+  // constant
   std::vector<std::uint16_t> material;  // index into State::material_names
   std::vector<double> area0;            // initial area, m^2
   std::vector<double> inv0;             // [4 * triangles] inverse of the initial edge matrix
                                         // [X1-X0 | X2-X0], row-major
   std::vector<double> mass_kg;          // physical mass rho A0 t (gravity uses it)
+  // history
   std::vector<double> shrinkage_strain; // eigenstrain eps_sh of Eq. 18 (negative on drying)
-  std::vector<double> sxx, syy, sxy;    // Cauchy stress, Pa (updated with the forces)
+  std::vector<double> sxx, syy, sxy;    // Cauchy stress, Pa, at the last equilibrium
   std::size_t size() const { return area0.size(); }
 };
 
 struct Joints {                   // one per interior edge inside a material
+  // constant
   // [4 * joints]: edge a-b of the first triangle (CCW), then b'-a' of the second, so that
   // node 4j+0 meets 4j+3 and 4j+1 meets 4j+2.
   std::vector<index_t> node;
-  std::vector<std::uint8_t> broken;     // [joints] 1 once the joint has failed, for good
   std::vector<std::uint16_t> material;  // [joints] the material of both its triangles
   std::vector<double> length0;          // [joints] initial length, m
   std::vector<double> strength_factor;  // [joints] multiplies the material's tensile strength
                                         // and cohesion (strength_heterogeneity; 1 without)
-  std::vector<double> damage;           // [3 * joints] committed damage D at the two ends and
-                                        // the middle (never decreases: joints do not heal)
-  std::vector<double> force;            // [8 * joints] scratch: force on its nodes 0..3, N
-  std::vector<double> work;             // [joints] work done on the joint since t = 0, J
   // The joints of a material with mechanics, as runs of consecutive joints: run r is
   // [mechanical_runs[2r], mechanical_runs[2r + 1]), ascending. The joint kernel visits only
   // these; a rigid material's joints (the Peron deck's base: a third of its joints) carry
   // nothing, ever: their forces stay 0 and no work is done on them. (A list of single joints
-  // instead made the kernel a fifth slower on a mesh with no rigid joints.)
+  // instead makes the kernel a fifth slower on a mesh with no rigid joints.)
   std::vector<index_t> mechanical_runs;
+  // history
+  std::vector<std::uint8_t> broken;     // [joints] 1 once the joint has failed, for good
+  std::vector<double> damage;           // [3 * joints] committed damage D at the two ends and
+                                        // the middle (never decreases: joints do not heal)
+  std::vector<double> force;            // [8 * joints] force on its nodes 0..3 at the last
+                                        // step, N: the gather reads it, and the next step's
+                                        // work is the trapezoid of it and the new force
+  // totals
+  std::vector<double> work;             // [joints] work done on the joint since t = 0, J
   std::size_t size() const { return broken.size(); }
 };
 
 // A flux or exchange term of a moisture node: a boundary edge half or a crack face half.
 enum class MoistureTermKind : std::uint8_t { flux, exchange };
 
+// Moisture nodes: connected sets of coincident corners under intact joints (doc/physics.md
+// "Cracks and moisture"), rebuilt with everything they carry at every split but for w.
 struct MoistureNodes {
+  // history
   std::vector<double> w;              // [mnodes] moisture content, mass fraction of dry mass
+  // topology
   std::vector<double> dry_mass;       // [mnodes] kg
   std::vector<index_t> corner_offset; // [mnodes + 1] CSR into corner
   std::vector<index_t> corner;        // mechanical nodes merged into each moisture node
@@ -98,18 +122,20 @@ struct MoistureNodes {
   std::vector<double> term_level;     // flux: residual w (flux out stops at or below it);
                                       // exchange: air moisture w_e
   std::vector<index_t> boundary_node;   // moisture nodes with terms or a fixed value, ascending
-  std::vector<double> boundary_inflow;  // [mnodes] scratch: kg/s in through the boundary
+  // scratch
+  std::vector<double> boundary_inflow;  // [mnodes] kg/s in through the boundary
   std::size_t size() const { return w.size(); }
 };
 
 // Per-triangle conductance: inflow into corner a = -sum_b K_ab w_b, K_ab = k t A grad N_a .
 // grad N_b (Eqs. 2-4), from the initial geometry; 6 entries K00 K01 K02 K11 K12 K22.
 struct MoistureElements {
-  std::vector<double> conductance;    // [6 * triangles] kg/s per unit w; 0 without moisture
-  std::vector<double> corner_inflow;  // [3 * triangles] scratch: kg/s into each corner
+  std::vector<double> conductance;    // constant: [6 * triangles] kg/s per unit w; 0 without moisture
+  std::vector<double> corner_inflow;  // scratch: [3 * triangles] kg/s into each corner
 };
 
-// Water bookkeeping for water_balance_error (DESIGN section 5), compensated sums.
+// Water bookkeeping for water_balance_error (doc/physics.md "Energies and water balance"),
+// compensated sums. Totals.
 struct WaterBalance {
   double initial_kg = 0;     // water in the soil at t = 0
   double net_in_kg = 0;      // through boundaries and crack faces since t = 0
@@ -135,17 +161,20 @@ struct MaterialModel {
 
 // A [[mechanics.boundary]]: nodes whose components are fixed or driven at a velocity.
 struct MechanicsBoundary {
+  // constant
   std::string name;
   std::vector<index_t> nodes;   // unique, ascending
   bool fix_x = false, fix_y = false;
   double vx = 0, vy = 0;        // m/s of the prescribed components (0 when fixed)
+  // totals
   double reaction_x = 0, reaction_y = 0;  // N, force the support exerts, last equilibrium
   double work_J = 0;            // work done on the solid through this boundary since t = 0
 };
 
-// Penalty contact between surface edges (DESIGN section 4, ycore/contact/contact.h): node-to-edge in
-// both directions, Coulomb friction as an elastic slip capped at mu f_n.
+// Penalty contact between surface edges (doc/physics.md "Contact and friction"): node-to-edge
+// in both directions, Coulomb friction as an elastic slip capped at mu f_n.
 struct Contact {
+  // constant
   double penalty_pa = 0;              // normal penalty p_n, Pa: a node pressed a depth g into
                                       // an edge carries p_n t g / 2 per surface edge of its own
                                       // (a closed joint's traction p g / l over half its length)
@@ -153,37 +182,45 @@ struct Contact {
   double damping_ratio = 0;           // normal dashpot, fraction of critical
   double buffer_m = 0;                // candidates are kept within 2 buffers; rebuilt when a
                                       // surface node has moved more than one
-  // Surfaces, rebuilt when joints break: triangle edges with no joint or a broken one. An
-  // edge is named by its first corner c, and runs counter-clockwise to next_corner(c).
+  // topology: surfaces are triangle edges with no joint or a broken one. An edge is named by
+  // its first corner c, and runs counter-clockwise to next_corner(c).
   std::vector<index_t> surface_edge;  // first corners, ascending
   std::vector<index_t> surface_node;  // corners on a surface edge, ascending
   std::vector<std::uint8_t> is_surface_edge;   // [nodes] whether the edge it starts is one
-  // Candidate pairs (node, surface edge), sorted by node then edge, from the broad phase.
+  // history: candidate pairs (node, surface edge), sorted by node then edge, from the broad
+  // phase, with their friction and last forces, and where the broad phase last looked.
   std::vector<index_t> pair_node, pair_edge;
+  std::vector<double> pair_slip;      // elastic tangential slip of the pair, m (friction history)
+  std::vector<double> pair_force;     // [6 * pairs] force on the node, edge a, edge b at the
+                                      // last step: gathered, and the trapezoid of the work
+  std::vector<double> x_built, y_built;  // [surface nodes] positions at the last build
+  // topology of the pairs, indexed from them (index_contact_pairs)
   std::vector<index_t> node_pairs;    // CSR: pairs of the k-th distinct node start at node_pairs[k]
   std::vector<std::size_t> corner_owner_begin;  // the corners of each Ownership slot's nodes
-  std::vector<double> pair_slip;      // elastic tangential slip of the pair, m (friction history)
-  std::vector<double> pair_force;     // [6 * pairs] scratch: force on the node, edge a, edge b
   std::vector<index_t> gather_offset; // [nodes + 1] CSR into gather_entry: the pair forces a
   std::vector<index_t> gather_entry;  //   node receives, as 3 pair + slot (0 node, 1 a, 2 b)
-  std::vector<double> x_built, y_built;  // [surface nodes] positions at the last build
+  // totals
   double work_J = 0;                  // work done on the solid by contact forces since t = 0
-  std::uint64_t builds = 0;
+  std::uint64_t builds = 0;           // broad phases run
 };
 
-// Relaxation scratch and the solid's energy bookkeeping.
+// The solid's controls, relaxation scratch and energy bookkeeping.
 struct Mechanics {
+  // constant
   double thickness_m = 1;                 // out-of-plane
   double gravity_x = 0, gravity_y = 0;    // m/s^2
   // Nodes driven at a prescribed velocity (unique, ascending) and that velocity, m/s.
   std::vector<index_t> driven_node;
   std::vector<double> driven_vx, driven_vy;
-  std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
   double step_s = 0;                      // pseudo-time step of the explicit integration
-  double unrelaxed_s = 0;                 // moisture time since the last relaxation
   double roundoff_net2 = 0;               // N^2: |net force|^2 that round-off alone makes
   double mesh_diagonal_m = 0;             // of the initial bounding box: a node that moves
                                           // farther in one relaxation has run away
+  // scratch
+  std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
+  // history
+  double unrelaxed_s = 0;                 // moisture time since the last relaxation
+  // totals
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
   std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap
@@ -200,13 +237,16 @@ struct State {
   Mechanics mechanics;
   Contact contact;
   std::vector<MechanicsBoundary> mechanics_boundaries;
+  // constant
   Ownership ownership;                                     // the threads' ranges (ownership.h)
   std::vector<MaterialModel> materials;                    // by material id
   std::vector<std::string> material_names;                 // material id -> deck name
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
+  // history
   double time_s = 0;
   std::uint64_t coupling_steps = 0;  // steps of the staggered loop since t = 0
-  StageSeconds wall;  // this process's wall time by stage (not part of the physics)
+  // this process's wall time by stage: not part of the physics, not checkpointed
+  StageSeconds wall;
 };
 
 }  // namespace ydry

@@ -1,0 +1,46 @@
+// Bringing the solid to equilibrium after each step of the moisture clock (relaxation.cpp;
+// doc/physics.md "Quasi-static equilibrium" and "Dynamic integration", doc/architecture.md
+// "A coupling step").
+//
+// relax and move_dynamically are phases, not kernels: each runs the element, joint and contact
+// kernels over the whole solid many times, and writes the nodes (positions, velocities,
+// forces), the triangles' stresses, the joints' forces and work, the contact's pairs, forces,
+// slips and work, the mechanics' motion start, step counts, residual and gravity work, the
+// boundaries' reactions and work, and the stage clock (State::wall). They read the materials,
+// the ownership table, and the time and material names for the messages of a numerical failure.
+#pragma once
+
+#include <cstdint>
+
+#include "ycore/input/deck.h"
+#include "ycore/state/state.h"
+
+namespace ydry {
+
+struct RelaxationControls {
+  double tolerance = 1e-7;          // out-of-balance force ratio that ends it
+  std::int64_t max_steps = 200000;  // step cap
+  RelaxationMethod method = RelaxationMethod::viscous;
+};
+
+struct RelaxationResult {
+  std::int64_t steps = 0;
+  double residual = 0;   // ||net force on free components|| / ||element forces||
+  bool capped = false;   // stopped by the step cap
+};
+
+// One quasi-static step of the solid over `coupling_dt` seconds of the moisture clock:
+// driven nodes move by velocity x coupling_dt, then explicit central-difference steps, damped
+// by adaptive mass-proportional damping or steered by FIRE (controls.method), run until the
+// out-of-balance ratio is below the tolerance. Velocities are left as displacement /
+// coupling_dt (physical), reactions and boundary and gravity work are booked. Throws
+// NumericalFailure (numerical_failure.h) for a non-finite or runaway solid.
+RelaxationResult relax(State& state, const RelaxationControls& controls, double coupling_dt);
+
+// The dynamic alternative (solver.integration = "dynamic"): the solid moves for coupling_dt
+// seconds of real time in undamped central-difference steps no longer than the stable one,
+// velocities carried over from the last call; driven nodes move at their velocity. Books the
+// reactions and the work like relax.
+RelaxationResult move_dynamically(State& state, double coupling_dt);
+
+}  // namespace ydry
