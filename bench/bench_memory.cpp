@@ -1,9 +1,9 @@
 // The machine's memory bandwidth, the ceiling of a mechanical step on a mesh larger than the
 // cache: the rectangle's step streams some 215 MB of node, triangle and joint data
-// (bench/RESULTS.md, sessions 25 and 26), so its element-steps/s are read against this figure. The
-// STREAM triad a[i] = b[i] + s c[i] over three arrays of 256 MiB (far beyond any cache), best
-// of five, at 1 thread and at all threads; bytes counted as STREAM counts them (two read, one
-// written: 24 per index). A figure to report, never asserted.
+// (bench/RESULTS.md, "Log": what "memory" is), so its element-steps/s are read against this
+// figure. The STREAM triad a[i] = b[i] + s c[i] over three arrays of 256 MiB (far beyond any
+// cache), best of five, at 1 thread and at all threads; bytes counted as STREAM counts them
+// (two read, one written: 24 per index). A figure to report, never asserted.
 #include <omp.h>
 
 #include <algorithm>

@@ -75,7 +75,7 @@ def peron_lines(run):
         sys.exit(f"run_bench.py: {run} did not reach its end time (summary.json: completed false)")
     return [f"peron end to end ({run}, ydry {summary['version']}): {summary['wall_s']:.0f} s wall on "
             f"{summary['threads']} threads, {summary['mechanical_steps']:.0f} mechanical steps, "
-            f"{summary['moisture_steps']} moisture steps, {summary['elements']} triangles, "
+            f"{summary['moisture_steps']} coupling steps, {summary['elements']} triangles, "
             f"{summary['crack_count']:.0f} cracks"]
 
 

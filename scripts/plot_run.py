@@ -84,7 +84,7 @@ def report(run, folder, figures, skipped):
                    f"({np.count_nonzero(series['time_s'] >= stable)} rows)")
     status = "completed" if s["completed"] else f"NOT completed (stopped at t = {s['time_s']:g} s)"
     lines = [f"# ydry run {s['name']}: {folder}", "",
-             f"{status}; {s['elements']} elements, {s['moisture_steps']} moisture steps, "
+             f"{status}; {s['elements']} elements, {s['moisture_steps']} coupling steps, "
              f"wall {s['wall_s']:.0f} s, version {s['version']}", "",
              "| quantity | value |", "|---|---|",
              f"| end time | {fmt_time(s['time_s'])} |",

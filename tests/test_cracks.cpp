@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "tests/test_support.h"
+#include "ycore/state/mesh_rectangle.h"
 #include "ycore/state/build_state.h"
 #include "ycore/output/csv_table.h"
 #include "ycore/output/vtk_output.h"

@@ -12,7 +12,7 @@
 #include "tests/test_support.h"
 #include "ycore/input/deck.h"
 #include "ycore/input/input_error.h"
-#include "ycore/state/mesh_input.h"
+#include "ycore/state/mesh_gmsh.h"
 
 using ydry::InputError;
 

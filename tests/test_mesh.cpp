@@ -6,6 +6,7 @@
 #include <set>
 
 #include "tests/test_support.h"
+#include "ycore/state/mesh_rectangle.h"
 #include "ycore/state/build_state.h"
 #include "ycore/driver/setup.h"
 

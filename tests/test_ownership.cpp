@@ -12,6 +12,8 @@
 #include <omp.h>
 
 #include "tests/test_support.h"
+#include "ycore/state/mesh_order.h"
+#include "ycore/state/mesh_rectangle.h"
 #include "ycore/state/blocked_sum.h"
 #include "ycore/driver/setup.h"
 

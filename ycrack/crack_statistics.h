@@ -11,7 +11,7 @@ namespace ydry {
 struct Crack {
   double x_m = 0;            // current x of the mouth: mean of its corners in the crack's material
   double width_m = 0;        // normal opening at the mouth (the largest of the joints there)
-  double length_m = 0;       // sum of the current lengths of its joints
+  double length_m = 0;       // sum of the current lengths of its broken joints
   bool penetrating = false;  // reaches the bottom of its material's layer
   bool on_top_surface = false;  // its mouth is on the outer boundary facing up (seen from above)
   std::vector<index_t> joints;  // ascending: its broken and process-zone joints

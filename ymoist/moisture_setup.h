@@ -21,6 +21,9 @@ struct MoistureMesh {
   const std::vector<std::string>& material_names;
   const std::map<std::string, std::vector<index_t>>& boundary_edges;
 };
+inline MoistureMesh moisture_mesh(const State& s) {
+  return {s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges};
+}
 
 // Sets up the moisture model on a state whose moisture nodes are grouped (moisture.corner and
 // corner_offset, nodes.mnode): initial w, dry masses, triangle conductances, boundary terms

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "ycore/input/input_error.h"
-#include "ycore/state/mesh_input.h"
+#include "ycore/state/mesh_gmsh.h"
 
 namespace {
 

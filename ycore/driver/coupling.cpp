@@ -30,7 +30,7 @@ void split_across_broken_joints(State& s, const Deck& deck) {
     const std::vector<index_t> old_mnode = s.nodes.mnode;
     const std::vector<double> old_w = s.moisture.w;
     group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
-    remap_moisture_nodes({s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges}, deck, old_mnode, old_w,
+    remap_moisture_nodes(moisture_mesh(s), deck, old_mnode, old_w,
                          s.moisture);
   } else {
     tie_corners(s.joints, s.nodes);

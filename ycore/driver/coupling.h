@@ -1,4 +1,9 @@
 // The paper's staggered loop (section 3.3; doc/architecture.md "A coupling step").
+//
+// The functions that take a State& are phases, not kernels: they run the moisture, solid and
+// cracking kernels in turn, and so write the moisture (w, ledger, and on a split the moisture
+// nodes), the solid (nodes, stresses, eigenstrains, joints, contact, supports, mechanics), the
+// topology, time_s and coupling_steps (advance_to), and the stage clock.
 #pragma once
 
 #include <functional>

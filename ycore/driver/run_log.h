@@ -4,7 +4,7 @@
 #include <string>
 
 #include "ycore/input/deck.h"
-#include "ycore/output/output_files.h"
+#include "ycore/output/log_file.h"
 #include "ycore/state/state.h"
 
 namespace ydry {

@@ -65,8 +65,8 @@ RunSession::RunSession(const RunOptions& options)
   reactions_csv_ = {outdir_ + "/reactions.csv", kReactionsCsvHeader, record_.reactions_rows};
   // surface.csv profiles the boundary named "top", the soil's free surface.
   const auto top = state_.boundary_edges.find("top");
-  if (deck_.mechanics && top != state_.boundary_edges.end()) top_ = &top->second;
-  if (deck_.mechanics && !top_ && !restart_) log_.info("no surface.csv: the mesh has no boundary named \"top\"");
+  if (deck_.mechanics && top != state_.boundary_edges.end()) surface_edges_ = &top->second;
+  if (deck_.mechanics && !surface_edges_ && !restart_) log_.info("no surface.csv: the mesh has no boundary named \"top\"");
   if (restart_)
     write_files_of_checkpoint();
   else
@@ -91,7 +91,7 @@ void RunSession::write_files_of_checkpoint() {
     reactions_csv_.write();
     cracks_csv_.write();
   }
-  if (top_) surface_csv_.write();
+  if (surface_edges_) surface_csv_.write();
   write_summary(record_.finished, deck_.mechanics ? take_crack_census(state_, deck_.crack_width_threshold_m).closed : 0);
 }
 
@@ -99,7 +99,7 @@ void RunSession::write_row(bool completed) {
   const State& s = state_;
   if (s.time_s >= double(record_.next_frame) * deck_.output_interval_s * (1.0 - 1e-12) || completed) {
     write_frame(frames_, s, s.time_s);
-    if (top_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *top_)));
+    if (surface_edges_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *surface_edges_)));
     record_.next_frame = std::uint64_t(std::lround(std::floor(s.time_s / deck_.output_interval_s * (1.0 + 1e-12)))) + 1;
   }
   const CrackCensus census = deck_.mechanics ? take_crack_census(s, deck_.crack_width_threshold_m) : CrackCensus{};
@@ -163,7 +163,7 @@ bool RunSession::advance_to_row(double row_time_s) {
   return true;
 }
 
-int RunSession::stop_interrupted() {
+int RunSession::ssurface_edges_interrupted() {
   const std::string path = write_checkpoint();
   progress_.finish(state_.time_s, state_.coupling_steps);
   std::ostringstream w;
@@ -175,7 +175,7 @@ int RunSession::stop_interrupted() {
   return 130;
 }
 
-int RunSession::stop_failed(const NumericalFailure& failure) {
+int RunSession::ssurface_edges_failed(const NumericalFailure& failure) {
   // The state as it failed, for inspection: a last frame and a row, summary completed = false.
   progress_.finish(state_.time_s, state_.coupling_steps);
   log_.warning(std::string(failure.what()) + "; the state as it failed is the last frame of " + outdir_ + "/" +
@@ -190,20 +190,20 @@ void RunSession::finish() {
   progress_.finish(state_.time_s, state_.coupling_steps);
   log_end(log_, state_, deck_, progress_.wall_s(),
           outdir_ + "/" + deck_.name + ".pvd, series.csv, " + (deck_.mechanics ? "cracks.csv, reactions.csv, " : "") +
-              (top_ ? "surface.csv, " : "") + "summary.json, deck.toml, log.txt, " + final_checkpoint);
+              (surface_edges_ ? "surface.csv, " : "") + "summary.json, deck.toml, log.txt, " + final_checkpoint);
 }
 
 int RunSession::run_to_end() {
   try {
     while (!record_.finished) {
       if (!advance_to_row(std::min(deck_.end_time_s, double(record_.row) * deck_.series_interval_s)))
-        return stop_interrupted();
+        return ssurface_edges_interrupted();
       write_row(state_.time_s >= deck_.end_time_s);
       record_.finished = state_.time_s >= deck_.end_time_s;
       ++record_.row;
     }
   } catch (const NumericalFailure& failure) {
-    return stop_failed(failure);
+    return ssurface_edges_failed(failure);
   }
   finish();
   return 0;

@@ -11,6 +11,7 @@
 #include "ycore/driver/run.h"
 #include "ycore/output/checkpoint.h"
 #include "ycore/output/csv_table.h"
+#include "ycore/output/log_file.h"
 #include "ycore/output/vtk_output.h"
 #include "ycore/solid/numerical_failure.h"
 
@@ -38,8 +39,8 @@ class RunSession {
   bool advance_to_row(double row_time_s);
   bool checkpoint_due() const;
   std::string write_checkpoint();
-  int stop_interrupted();
-  int stop_failed(const NumericalFailure& failure);
+  int ssurface_edges_interrupted();
+  int ssurface_edges_failed(const NumericalFailure& failure);
   void finish();
 
   const RunOptions& options_;
@@ -54,7 +55,7 @@ class RunSession {
   FrameSeries frames_;
   Log log_;
   std::vector<index_t> right_end_;      // corners whose x-displacement series.csv reports
-  const std::vector<index_t>* top_ = nullptr;  // the edges surface.csv profiles; none: no file
+  const std::vector<index_t>* surface_edges_ = nullptr;  // the edges surface.csv profiles; none: no file
   CsvTable cracks_csv_, surface_csv_, reactions_csv_;
   std::uint64_t checkpoint_steps_ = 0;  // coupling steps at the last checkpoint
   double checkpoint_wall_s_ = 0;        // and its wall time

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ycore/input/deck.h"
+#include "ycore/output/json_object.h"
 #include "ycore/output/output_files.h"
 #include "ycore/state/state.h"
 #include "ycrack/crack_statistics.h"

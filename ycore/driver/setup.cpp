@@ -24,7 +24,7 @@ State prepare_state(const Deck& deck) {
                                  "so a moisture-only run has nothing to compute");
   group_moisture_nodes(s.joints, has_moisture, s.nodes, s.moisture);
   if (moisture)
-    init_moisture({s.nodes, s.triangles, s.joints, s.material_names, s.boundary_edges}, deck, s.moisture,
+    init_moisture(moisture_mesh(s), deck, s.moisture,
                   s.moisture_elements, s.water);
   if (deck.mechanics) {
     init_mechanics(s, deck);

@@ -69,6 +69,9 @@ std::string checkpoint_deck_text(const Checkpoint& checkpoint);
 // indexes the contact pairs. InputError for any field that is missing, of the wrong type or
 // size, a non-finite position, velocity or moisture, or contact pairs that are not pairs of
 // surface corners and edges in order.
+// Both take the State: restore_broken_joints reads the whole set-up (its fingerprint) and
+// writes joints.broken; restore_state writes every history and totals field (state_fields.h)
+// and the contact pairs' index.
 void restore_broken_joints(State& state, const Checkpoint& checkpoint);
 void restore_state(State& state, const Checkpoint& checkpoint);
 

@@ -1,10 +1,10 @@
 #include "ycore/output/output_files.h"
 
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -17,27 +17,6 @@ namespace {
 
 // Marks a folder as a ydry output folder, so a later run may reuse it without --force.
 constexpr const char* kMarker = ".ydry-output";
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
 
 }  // namespace
 
@@ -128,36 +107,6 @@ void write_series_csv(const std::string& path, const Series& series) {
     out << "\n";
   }
   write_file_atomically(path, out.str());
-}
-
-void JsonObject::number(const std::string& key, double v) {
-  fields.emplace_back(key, std::isfinite(v) ? format_double(v) : "null");
-}
-void JsonObject::integer(const std::string& key, long long v) { fields.emplace_back(key, std::to_string(v)); }
-void JsonObject::text(const std::string& key, const std::string& v) { fields.emplace_back(key, json_string(v)); }
-void JsonObject::boolean(const std::string& key, bool v) { fields.emplace_back(key, v ? "true" : "false"); }
-
-std::string JsonObject::dump() const {
-  std::string out = "{\n";
-  for (std::size_t i = 0; i < fields.size(); ++i)
-    out += "  " + json_string(fields[i].first) + ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");
-  return out + "}\n";
-}
-
-void Log::open(const std::string& path, bool quiet_console, bool append) {
-  file.open(path, append ? std::ios::app : std::ios::trunc);
-  quiet = quiet_console;
-  stderr_is_terminal = isatty(STDERR_FILENO);
-}
-
-void Log::info(const std::string& message) {
-  file << message << "\n" << std::flush;
-  if (!quiet) std::cerr << (stderr_is_terminal ? "\r\033[K" : "") << message << "\n";
-}
-
-void Log::warning(const std::string& message) {
-  file << "warning: " << message << "\n" << std::flush;
-  std::cerr << (stderr_is_terminal ? "\r\033[K" : "") << "ydry: warning: " << message << "\n";
 }
 
 }  // namespace ydry

@@ -1,10 +1,8 @@
-// The run's output folder and its plain files: series.csv, summary.json, deck.toml, log.txt.
-// Every file but the log is written to a temporary name and renamed, so a crash never
-// leaves a truncated file behind.
+// The run's output folder, series.csv and the atomic writes every output file but the log
+// goes through (a temporary name and a rename, so a crash never leaves a truncated file).
+// summary.json: json_object.h; log.txt: log_file.h.
 #pragma once
 
-#include <fstream>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,25 +40,5 @@ struct Series {
   std::vector<std::vector<double>> rows;  // one per output time, kSeriesColumns order
 };
 void write_series_csv(const std::string& path, const Series& series);
-
-// A flat JSON object: numbers (NaN as null), strings and booleans, in insertion order.
-struct JsonObject {
-  std::vector<std::pair<std::string, std::string>> fields;  // key -> encoded JSON value
-  void number(const std::string& key, double v);
-  void integer(const std::string& key, long long v);
-  void text(const std::string& key, const std::string& v);
-  void boolean(const std::string& key, bool v);
-  std::string dump() const;
-};
-
-// log.txt and stderr. Messages go to both (stderr unless quiet); warnings always reach stderr.
-struct Log {
-  std::ofstream file;
-  bool quiet = false;
-  bool stderr_is_terminal = false;
-  void open(const std::string& path, bool quiet_console, bool append = false);
-  void info(const std::string& message);
-  void warning(const std::string& message);
-};
 
 }  // namespace ydry

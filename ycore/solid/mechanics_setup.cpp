@@ -1,5 +1,6 @@
 // Setting up the solid: material constants, masses, reference geometry, joints and
-// boundary constraints (doc/deck.md; the arrays are those of ycore/state/state.h).
+// boundary constraints (doc/deck.md "[materials.NAME]" and "[[mechanics.boundary]]"; the
+// arrays are those of ycore/state/state.h).
 #include "ycore/solid/mechanics_setup.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
-// Setting up the solid from the deck (mechanics_setup.cpp; doc/deck.md).
+// Setting up the solid from the deck (mechanics_setup.cpp; doc/deck.md "[materials.NAME]",
+// "[[mechanics.boundary]]" and "[solver]").
 #pragma once
 
 #include "ycore/input/deck.h"

@@ -4,6 +4,9 @@
 #include <unordered_map>
 
 #include "ycore/input/input_error.h"
+#include "ycore/state/mesh_gmsh.h"
+#include "ycore/state/mesh_order.h"
+#include "ycore/state/mesh_rectangle.h"
 
 namespace ydry {
 namespace {

@@ -1,4 +1,4 @@
-// Gmsh MSH 4.1 ASCII reader (see mesh_input.h). Keeps node x, y; 3-node triangles with the
+// Gmsh MSH 4.1 ASCII reader (see mesh_gmsh.h). Keeps node x, y; 3-node triangles with the
 // name of their physical surface as material; 2-node lines under each name of their physical
 // curves. Unused sections are skipped; anything else it cannot represent is an InputError
 // naming the file and line.
@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "ycore/input/input_error.h"
-#include "ycore/state/mesh_input.h"
+#include "ycore/state/mesh_gmsh.h"
 
 namespace ydry {
 namespace {

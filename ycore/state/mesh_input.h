@@ -2,9 +2,7 @@
 // shared vertices, triangles tagged with a material, and named boundary edges.
 #pragma once
 
-#include <array>
 #include <cstdint>
-#include <istream>
 #include <limits>
 #include <map>
 #include <string>
@@ -31,34 +29,12 @@ struct MeshInput {
   std::size_t triangle_count() const { return tri_material.size(); }
 };
 
-// Built-in structured rectangle [0, lx] x [0, ly] of square-ish cells of about element_size;
-// pattern "right" (diagonal /), "left" (diagonal \) or "cross" (4 triangles per cell around
-// a centre vertex). Sides are named "left", "right", "bottom", "top". At most kMaxTriangles
-// (read_deck checks it).
-MeshInput generate_rectangle(double lx, double ly, double element_size,
-                             const std::string& pattern, const std::string& material);
-
-// generate_rectangle's cells along x and y, whole numbers as close to element_size as fit; as
-// doubles, so that a deck can be checked against the 32-bit indices before they are made.
-std::array<double, 2> rectangle_cells(double lx, double ly, double element_size);
-
 // The most triangles a mesh may have: the exploded mesh numbers 3 corners per triangle in
 // 32 bits, the largest index meaning none (kNoIndex).
 constexpr double kMaxTriangles = (std::numeric_limits<index_t>::max() - 1) / 3;
 
-// Gmsh 4.1 ASCII reader: 3-node triangles in physical surfaces (the surface's name is the
-// material), 2-node lines in physical curves (each curve name is a boundary). Throws
-// InputError naming the file and line on anything it cannot represent.
-MeshInput read_gmsh(const std::string& path);
-// The same from a stream; `path` names it in messages.
-MeshInput read_gmsh(std::istream& in, const std::string& path);
-
 // Makes every triangle counter-clockwise (swaps two corners of clockwise ones) and rejects
 // degenerate triangles and areas too large for a double; run on every MeshInput before use.
 void orient_counter_clockwise(MeshInput& mesh);
-
-// Renumbers the triangles in the order of their centroids along a Hilbert curve, so that
-// triangles near in the numbering are near in the mesh (ycore/state/mesh_order.cpp).
-void order_triangles_along_hilbert_curve(MeshInput& mesh);
 
 }  // namespace ydry

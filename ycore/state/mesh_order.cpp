@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <numeric>
 
-#include "ycore/state/mesh_input.h"
+#include "ycore/state/mesh_order.h"
 
 namespace ydry {
 namespace {
