@@ -29,18 +29,32 @@ DEMO_EARLY_CRACKING = ["mesh.element_size=0.004", "materials.soil.shrinkage_coef
                        "materials.soil.gf_I=0.02"]
 
 
+# --set overrides a check script was given, added to every run it makes (run_ydry): the same
+# case checked with other solver controls, e.g. --set solver.relaxation=newton.
+EXTRA_OVERRIDES = []
+
+
 def case_parser(doc, here):
-    """An argument parser for a check script: --ydry and --out (default: build/ydry and the
-    case's out/); a case adds its own arguments to it."""
+    """An argument parser for a check script: --ydry, --out (default: build/ydry and the
+    case's out/) and --set (overrides added to every run); a case adds its own arguments."""
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("--ydry", type=Path, default=REPO / "build" / "ydry")
     parser.add_argument("--out", type=Path, default=here / "out")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a deck override added to every run of the case (repeatable)")
     return parser
 
 
+def parse_case_arguments(parser):
+    """Parse a case's arguments; its --set overrides go to every run_ydry."""
+    args = parser.parse_args()
+    EXTRA_OVERRIDES[:] = args.set
+    return args
+
+
 def arguments(doc, here):
-    """Parse --ydry and --out (case_parser); create --out."""
-    args = case_parser(doc, here).parse_args()
+    """Parse --ydry, --out and --set (case_parser); create --out."""
+    args = parse_case_arguments(case_parser(doc, here))
     args.out.mkdir(parents=True, exist_ok=True)
     return args
 
@@ -72,7 +86,7 @@ def run_ydry(ydry, deck, outdir, overrides=()):
     """Run `ydry DECK -o OUTDIR --force --quiet --set o ...`; return the wall time in seconds,
     or None if ydry failed."""
     cmd = [str(ydry), str(deck), "-o", str(outdir), "--force", "--quiet"]
-    for override in overrides:
+    for override in list(overrides) + EXTRA_OVERRIDES:
         cmd += ["--set", override]
     start = time.perf_counter()
     proc = subprocess.run(cmd, capture_output=True, text=True)

@@ -146,7 +146,7 @@ def run_on_display(command):
 def main():
     parser = ydry_case.case_parser(__doc__, HERE)
     parser.add_argument("--pvpython", default="pvpython", help="ParaView's Python (default: from PATH)")
-    args = parser.parse_args()
+    args = ydry_case.parse_case_arguments(parser)
     args.out.mkdir(parents=True, exist_ok=True)
     verdicts = ydry_case.Verdicts("paraview")
     client = [shutil.which("Xvfb"), shutil.which(args.pvpython)]

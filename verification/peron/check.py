@@ -168,7 +168,7 @@ def check_run(run, outdir, verdicts, ydry):
     s, series, surface = run["summary"], run["series"], run["surface"]
     deck = tomllib.loads(DECK.read_text())
     print(f"# run {outdir}: ydry {s['version']}, {s['threads']} threads, wall {s['wall_s']:.0f} s, "
-          f"{s['elements']} elements, {s['moisture_steps']} moisture steps")
+          f"{s['elements']} elements, {s['moisture_steps']} coupling steps")
     differences = deck_differences(outdir, ydry)
     deck_name = DECK.relative_to(ydry_case.REPO)
     print(f"# the run's deck.toml could not be compared with {deck_name} (no deck.toml, or {ydry} check failed)"
@@ -247,7 +247,7 @@ def main():
     parser = ydry_case.case_parser(__doc__, HERE)
     parser.add_argument("--run", type=Path,
                         help="check this run of the deck (a ydry -o folder) instead of running it")
-    args = parser.parse_args()
+    args = ydry_case.parse_case_arguments(parser)
     verdicts = ydry_case.Verdicts("peron")
     outdir = args.run
     if outdir is None:

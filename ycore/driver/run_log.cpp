@@ -32,7 +32,10 @@ std::string steps_line(const State& state, const Deck& deck, double max_step_s) 
   if (deck.mechanics)
     steps << "; mechanical pseudo-step " << state.mechanics.step_s << " s, joint penalty "
           << deck.joint_penalty << " E, "
-          << (deck.dynamic ? "no" : deck.relaxation == RelaxationMethod::fire ? "FIRE" : "viscous")
+          << (deck.dynamic                                     ? "no"
+              : deck.relaxation == RelaxationMethod::fire   ? "FIRE"
+              : deck.relaxation == RelaxationMethod::newton ? "Newton"
+                                                            : "viscous")
           << " relaxation, tolerance " << deck.relaxation_tolerance << ", cap "
           << deck.relaxation_max_steps << " steps, relaxation every " << deck.mechanics_interval_s
           << " s of moisture time (0: every step); initial equilibrium in " << state.mechanics.steps
@@ -89,6 +92,13 @@ void log_end(Log& log, const State& state, const Deck& deck, double wall_s, cons
          << "elastic " << e.elastic_J << ", joint work " << e.joint_work_J << " (fracture " << e.fracture_J
          << "), external work " << e.external_work_J << ", gravity work " << e.gravity_work_J << ", kinetic "
          << e.kinetic_J << "\n";
+    if (!deck.dynamic) {
+      tail << "equilibria: " << state.mechanics.capped_relaxations << " relaxation(s) stopped at the step cap, worst "
+           << "residual " << state.mechanics.worst_residual;
+      if (deck.relaxation == RelaxationMethod::newton)
+        tail << ", " << state.mechanics.newton_fallbacks << " Newton relaxation(s) finished by FIRE";
+      tail << "\n";
+    }
   }
   tail << wall_by_stage_text(state.wall, wall_s) << "\n" << "outputs: " << outputs;
   log.info(tail.str());

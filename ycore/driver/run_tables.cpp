@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -56,6 +57,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
                          right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
                          e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
                          double(s.mechanics.steps)});
+  assert(row.size() == kSeriesColumns.size());  // the values in the columns' order
   return row;
 }
 
@@ -73,6 +75,12 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   j.integer("moisture_nodes", static_cast<long long>(s.moisture.size()));
   j.integer("moisture_steps", static_cast<long long>(s.coupling_steps));  // the coupling steps
   if (deck.mechanics) j.integer("closed_crack_count", closed_cracks);
+  if (deck.mechanics && !deck.dynamic) {  // how well the equilibria converged
+    j.integer("capped_relaxations", static_cast<long long>(s.mechanics.capped_relaxations));
+    j.number("worst_relaxation_residual", s.mechanics.worst_residual);
+  }
+  if (deck.relaxation == RelaxationMethod::newton)
+    j.integer("newton_fallbacks", static_cast<long long>(s.mechanics.newton_fallbacks));
   j.boolean("completed", completed);
   return j;
 }

@@ -1,6 +1,6 @@
-// The deck schema (doc/deck.md): one reader per section, each a TableReader (toml_reader.h)
-// that checks types and ranges, fills defaults into the resolved deck and rejects unknown
-// keys.
+// The deck schema (doc/deck.md "Format"): one reader per section, each a TableReader
+// (toml_reader.h) that checks types and ranges, fills defaults into the resolved deck and
+// rejects unknown keys.
 #include "ycore/input/deck.h"
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "ycore/input/input_error.h"
-#include "ycore/state/mesh_input.h"
+#include "ycore/state/mesh_rectangle.h"
 #include "ycore/input/toml_reader.h"
 #include "ycore/input/toml_writer.h"
 
@@ -222,11 +222,12 @@ void read_solver(TableReader r, Deck& d) {
   d.dynamic = r.string("integration", {"quasi_static", "dynamic"}, std::string("quasi_static")) == "dynamic";
   d.node_mass_scaling = r.boolean("node_mass_scaling", !d.dynamic);
   if (d.dynamic && d.node_mass_scaling) r.error("node_mass_scaling", "needs integration = \"quasi_static\": a dynamic run keeps the physical masses");
-  if (!d.dynamic)
-    d.relaxation = r.string("relaxation", {"viscous", "fire"}, std::string("viscous")) == "fire"
-                       ? RelaxationMethod::fire
-                       : RelaxationMethod::viscous;
-  else if (r.has("relaxation"))
+  if (!d.dynamic) {
+    const std::string method = r.string("relaxation", {"viscous", "fire", "newton"}, std::string("viscous"));
+    d.relaxation = method == "fire" ? RelaxationMethod::fire
+                   : method == "newton" ? RelaxationMethod::newton
+                                        : RelaxationMethod::viscous;
+  } else if (r.has("relaxation"))
     r.error("relaxation", "needs integration = \"quasi_static\": a dynamic run does not relax");
   r.finish();
 }

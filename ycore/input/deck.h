@@ -1,4 +1,4 @@
-// The input deck (TOML, SI units, doc/deck.md): parsed, overridden with --set,
+// The input deck (TOML, SI units, doc/deck.md "Format"): parsed, overridden with --set,
 // validated, and resolved with defaults. Every key of the schema is read here; a key the
 // schema does not know, a wrong type or an out-of-range value is an InputError naming the
 // file, line and key.
@@ -61,7 +61,7 @@ struct CrackSegmentDeck {
   std::string where;
 };
 
-enum class RelaxationMethod { viscous, fire };
+enum class RelaxationMethod { viscous, fire, newton };
 
 struct Deck {
   std::string path;  // the deck file as given
@@ -110,8 +110,9 @@ struct Deck {
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
   bool node_mass_scaling = true;      // quasi-static: nodes stiff for their mass made heavier
-  // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood) or
-  // "fire" (FIRE, Bitzek et al. 2006); ycore/solid/relaxation.cpp.
+  // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood),
+  // "fire" (FIRE, Bitzek et al. 2006; ycore/solid/relaxation.cpp) or "newton" (Newton on the
+  // out-of-balance force with a trust region, FIRE where it stops; ycore/solid/newton.cpp).
   RelaxationMethod relaxation = RelaxationMethod::viscous;
   // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
   // instead of relaxing to equilibrium after each coupling step.

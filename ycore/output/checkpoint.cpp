@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include "version.h"
@@ -11,6 +12,10 @@
 
 namespace ydry {
 namespace {
+
+// Totals added to the state after checkpoint format 1 was first written: a checkpoint without
+// one (written before) restores it as 0, its value until the code that counts it ran.
+const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual"};
 
 template <class R, class Field>
 void for_each_record_field(R& r, Field&& field) {
@@ -151,6 +156,7 @@ void restore_state(State& s, const Checkpoint& c) {
   s.contact.pair_force.resize(6 * pairs.size());
   for_each_history_field(s, [&](const std::string& name, auto& value) {
     if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
+      if (kTotalsAddedToFormat1.count(name) && !c.fields.count(name)) return;  // an older checkpoint: 0
       c.take(name, value);
     } else {
       const std::size_t size = value.size();

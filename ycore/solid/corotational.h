@@ -36,6 +36,27 @@ inline CorotationalState corotational_state(const double* x, const double* y, co
   return k;
 }
 
+// The first Piola-Kirchhoff stress P = R T of the law.
+struct FirstPiola {
+  double P00, P01, P10, P11;
+};
+inline FirstPiola first_piola(const CorotationalState& k) {
+  const double c = k.c, sn = k.s, T00 = k.T00, T11 = k.T11, T01 = k.T01;
+  return {c * T00 - sn * T01, c * T01 - sn * T11, sn * T00 + c * T01, sn * T01 + c * T11};
+}
+
+// The internal forces A0 t P : dF/dx of corners 1 and 2 (G00, G10 on corner 1, G01, G11 on
+// corner 2, each with a minus sign), through the columns of inv0^T; corner 0 takes the sum.
+// `volume` is A0 t.
+struct CornerForces {
+  double G00, G01, G10, G11;
+};
+inline CornerForces corner_forces(const FirstPiola& p, const double* inv, double volume) {
+  const double v = volume;
+  return {v * (p.P00 * inv[0] + p.P01 * inv[1]), v * (p.P00 * inv[2] + p.P01 * inv[3]),
+          v * (p.P10 * inv[0] + p.P11 * inv[1]), v * (p.P10 * inv[2] + p.P11 * inv[3])};
+}
+
 // The same for triangle e of the state.
 inline CorotationalState corotational_state(const Nodes& n, const Triangles& tri, const MaterialModel& m,
                                             std::size_t e) {

@@ -42,22 +42,19 @@ __attribute__((always_inline)) inline void material_run(
   for (std::size_t e = begin; e < end; ++e) {
     const double* inv = &inv0[4 * e];
     const CorotationalState k = corotational_state(&x[3 * e], &y[3 * e], inv, lambda, mu, bulk3, shrinkage[e]);
-    const double c = k.c, sn = k.s, T00 = k.T00, T11 = k.T11, T01 = k.T01;
-    const double P00 = c * T00 - sn * T01, P01 = c * T01 - sn * T11;
-    const double P10 = sn * T00 + c * T01, P11 = sn * T01 + c * T11;
+    const FirstPiola p = first_piola(k);
     if (kStress) {  // R T R^T: the stress of the law in the current axes (Cauchy at small strain)
-      sxx[e] = P00 * c - P01 * sn;
-      syy[e] = P10 * sn + P11 * c;
-      sxy[e] = P00 * sn + P01 * c;
+      const double c = k.c, sn = k.s;
+      sxx[e] = p.P00 * c - p.P01 * sn;
+      syy[e] = p.P10 * sn + p.P11 * c;
+      sxy[e] = p.P00 * sn + p.P01 * c;
     }
-    if (kForces) {  // internal work A0 t P : dF; dF/dx of corners 1, 2 through the columns of inv0^T
-      const double v = area0[e] * thickness;
-      const double G00 = v * (P00 * inv[0] + P01 * inv[1]), G01 = v * (P00 * inv[2] + P01 * inv[3]);
-      const double G10 = v * (P10 * inv[0] + P11 * inv[1]), G11 = v * (P10 * inv[2] + P11 * inv[3]);
+    if (kForces) {  // internal work A0 t P : dF
+      const CornerForces g = corner_forces(p, inv, area0[e] * thickness);
       const double wx = mass[e] / 3.0 * gx, wy = mass[e] / 3.0 * gy;  // a third of the weight
-      fx[3 * e] = (G00 + G01) + wx, fy[3 * e] = (G10 + G11) + wy;
-      fx[3 * e + 1] = -G00 + wx, fy[3 * e + 1] = -G10 + wy;
-      fx[3 * e + 2] = -G01 + wx, fy[3 * e + 2] = -G11 + wy;
+      fx[3 * e] = (g.G00 + g.G01) + wx, fy[3 * e] = (g.G10 + g.G11) + wy;
+      fx[3 * e + 1] = -g.G00 + wx, fy[3 * e + 1] = -g.G10 + wy;
+      fx[3 * e + 2] = -g.G01 + wx, fy[3 * e + 2] = -g.G11 + wy;
     }
   }
 }

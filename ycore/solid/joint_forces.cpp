@@ -267,14 +267,20 @@ void store_chunk(const Nodes& n, const Mechanics& mech, const std::vector<Materi
 
 void joint_nodal_forces(const Nodes& n, const Joints& jt, const Mechanics& mech,
                         const std::vector<MaterialModel>& materials, std::size_t j, double out[8]) {
+  const index_t* node = &jt.node[4 * j];
+  const double x[4] = {n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]]};
+  const double y[4] = {n.y[node[0]], n.y[node[1]], n.y[node[2]], n.y[node[3]]};
+  joint_nodal_forces_at(jt, mech, materials, j, x, y, out);
+}
+
+void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::vector<MaterialModel>& materials,
+                           std::size_t j, const double x[4], const double y[4], double out[8]) {
   const MaterialModel& m = materials[jt.material[j]];
   if (jt.broken[j] || !m.mechanical) {
     for (int k = 0; k < 8; ++k) out[k] = 0.0;
     return;
   }
-  const index_t* node = &jt.node[4 * j];
-  const JointFrame f = joint_frame(n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]], n.y[node[0]],
-                                   n.y[node[1]], n.y[node[2]], n.y[node[3]]);
+  const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
   joint_forces_with(f, h0, mech.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {

@@ -23,5 +23,9 @@ void joint_forces(const Nodes& nodes, const Mechanics& mechanics, const Ownershi
 // points, as joint_forces stores them: zero for a broken joint.
 void joint_nodal_forces(const Nodes& nodes, const Joints& joints, const Mechanics& mechanics,
                         const std::vector<MaterialModel>& materials, std::size_t j, double out[8]);
+// The same with its nodes 0..3 at x, y (the equilibrium solver's tangent, tangent.h).
+void joint_nodal_forces_at(const Joints& joints, const Mechanics& mechanics,
+                           const std::vector<MaterialModel>& materials, std::size_t j, const double x[4],
+                           const double y[4], double out[8]);
 
 }  // namespace ydry

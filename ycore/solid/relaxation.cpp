@@ -38,80 +38,14 @@
 #include "ycore/contact/contact_forces.h"
 #include "ycore/solid/element_forces.h"
 #include "ycore/solid/joint_forces.h"
+#include "ycore/solid/newton.h"
 #include "ycore/solid/numerical_failure.h"
+#include "ycore/solid/solid_forces.h"
 #include "ycore/state/blocked_sum.h"
 #include "ycore/state/stage_timing.h"
 
 namespace ydry {
 namespace {
-
-struct ForceMeasures {
-  double net2 = 0;       // |net force|^2 over free components
-  double reference2 = 0; // |element forces and gravity|^2 over all nodes
-  double rayleigh_numerator = 0; // -v.(f - f_previous) over free components, v the last step's
-                                 // velocity and f_previous the force that made it
-  double twice_kinetic = 0;      // v.M v over free components
-  double power = 0;              // f.v over free components
-  double force2_over_mass = 0;   // f.M^-1 f over free components
-  double ratio() const { return reference2 > 0.0 ? std::sqrt(net2 / reference2) : (net2 > 0.0 ? INFINITY : 0.0); }
-};
-
-// Adds the joint and contact forces to the node forces (through each node's joint slots and
-// contact gather list) and measures; the Rayleigh numerator's -v.f only (compute_forces adds
-// v.f_previous).
-ForceMeasures gather_interaction_forces(const Joints& joints, const Contact& c, const Ownership& ownership, Nodes& n,
-                                        bool fire_measures) {
-  const std::vector<double>& jf = joints.force;
-  const bool contact = !c.gather_offset.empty();
-  const auto sums = blocked_sum<6>(n.size(), [&](std::size_t i, std::array<double, 6>& sum) {
-    double fx = n.fx[i], fy = n.fy[i];
-    sum[1] += fx * fx + fy * fy;
-    for (int k = 0; k < 2; ++k) {
-      const index_t slot = n.joint_slot[2 * i + k];
-      if (slot == kNoIndex) continue;
-      fx += jf[2 * std::size_t(slot)];
-      fy += jf[2 * std::size_t(slot) + 1];
-    }
-    if (contact)
-      for (index_t k = c.gather_offset[i]; k < c.gather_offset[i + 1]; ++k) {
-        fx += c.pair_force[2 * std::size_t(c.gather_entry[k])];
-        fy += c.pair_force[2 * std::size_t(c.gather_entry[k]) + 1];
-      }
-    n.fx[i] = fx;
-    n.fy[i] = fy;
-    const auto measure = [&](double f, double u) {
-      sum[0] += f * f;
-      sum[2] -= u * f;
-      sum[3] += n.m[i] * u * u;
-      if (fire_measures) {  // a division per component: only where FIRE reads them
-        sum[4] += f * u;
-        sum[5] += f * f / n.m[i];
-      }
-    };
-    if (!(n.constraint[i] & kFixX)) measure(fx, n.vx[i]);
-    if (!(n.constraint[i] & kFixY)) measure(fy, n.vy[i]);
-  }, ownership.node_begin);
-  return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5]};
-}
-
-// FIRE's measures (power, f.M^-1 f) only with fire_measures. With move_first, the nodes are
-// first moved by that pseudo-step (in the element kernel's pass), which sums v.f_previous of
-// the Rayleigh numerator where it reads f_previous: so no node keeps its force of the step
-// before (8 % of the bytes a step moves on a large mesh: bench/RESULTS.md).
-ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool fire_measures = false,
-                             const VelocityUpdate* move_first = nullptr) {
-  StageClock clock;
-  const double power_before = element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes, move_first);
-  clock.lap(s.wall.elements);
-  joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, dt);
-  clock.lap(s.wall.joints);
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), dt, friction);
-  clock.lap(s.wall.contact);
-  ForceMeasures measures = gather_interaction_forces(s.joints, s.contact, s.ownership, s.nodes, fire_measures);
-  clock.lap(s.wall.gather);
-  measures.rayleigh_numerator += power_before;
-  return measures;
-}
 
 // Central differences with damping c (centred: (1 - c dt/2) v_old, / (1 + c dt/2)); c = 0:
 // undamped.
@@ -271,9 +205,11 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   Mechanics& mech = s.mechanics;
   const double dt = mech.step_s;
   start_motion(n, s.ownership, mech);
+  const std::vector<double> joint_work =
+      controls.method == RelaxationMethod::newton ? s.joints.work : std::vector<double>{};
   predict_equilibrium(s.contact, s.ownership, n, coupling_dt, dt);
   move_driven_nodes(mech, n, coupling_dt, dt);
-  const bool fire_measures = controls.method == RelaxationMethod::fire;
+  const bool fire_measures = controls.method != RelaxationMethod::viscous;
   // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium).
   const FrictionUpdate friction = FrictionUpdate::at_equilibrium;
   ForceMeasures measures = compute_forces(s, dt, friction, fire_measures);
@@ -290,6 +226,13 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     return m.net2 <= mech.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
   result.residual = measures.ratio();
+  if (controls.method == RelaxationMethod::newton) {
+    const NewtonOutcome newton = newton_equilibrium(s, controls, measures, joint_work);
+    result.steps += newton.iterations;
+    measures = newton.measures;
+    result.residual = measures.ratio();
+    if (!newton.converged) ++mech.newton_fallbacks;  // FIRE goes on from where Newton stopped
+  }
   FireSteering fire(dt);
   double damping = 0.0;
   while (!balanced(measures) && result.steps < controls.max_steps) {
@@ -302,6 +245,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     result.residual = measures.ratio();
   }
   result.capped = !balanced(measures);
+  // At the round-off floor the ratio measures nothing (a solid at rest has no forces).
+  if (measures.net2 > mech.roundoff_net2) mech.worst_residual = std::max(mech.worst_residual, result.residual);
   commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size());
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.

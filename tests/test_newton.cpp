@@ -1,0 +1,113 @@
+// The Newton equilibrium solver (ycore/solid/newton.h, tangent.h).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tests/test_support.h"
+#include "ycore/driver/coupling.h"
+#include "ycore/driver/setup.h"
+#include "ycore/solid/solid_forces.h"
+#include "ycore/solid/tangent.h"
+
+using namespace ydry;
+
+namespace {
+
+// The shrinkage block of paper section 4.3 (verification/shrinkage) as a new user would write
+// it: the deck format's defaults for every solver control (penalty 1000 E, tolerance 1e-7),
+// drying from its top at a constant rate, so that the solid relaxes after each of many
+// moisture steps.
+Deck drying_block(const std::vector<std::string>& sets) {
+  std::vector<std::string> all = {"mesh.element_size=0.004", "run.end_time=2000", "run.output_interval=1000", "solver.max_coupling_step=50",
+                                  "materials.soil.initial_moisture=1.0",
+                                  "moisture.boundary=[{on = \"top\", type = \"flux\", rate = -1e-4}]"};
+  all.insert(all.end(), sets.begin(), sets.end());
+  return load_deck(YDRY_SOURCE_DIR "/verification/shrinkage/shrinkage.toml", all);
+}
+
+}  // namespace
+
+TEST_CASE("Newton brings a drying elastic block to equilibrium in a few iterations a relaxation, "
+          "at the damped relaxation's equilibrium", "[newton]") {
+  State results[2];
+  for (const char* method : {"viscous", "newton"}) {
+    INFO(method);
+    const Deck deck = drying_block({std::string("solver.relaxation=\"") + method + "\""});
+    State& s = results[method[0] == 'n'];
+    s = setup_state(deck);
+    advance_to(s, deck, deck.end_time_s, coupling_step_limit(s, deck));
+    REQUIRE(s.coupling_steps > 10);
+    CHECK(s.mechanics.capped_relaxations == 0);
+    CHECK(s.mechanics.worst_residual <= 1e-7);
+  }
+  const State& newton = results[1];
+  const double relaxations = double(newton.coupling_steps + 1);  // and the initial equilibrium
+  CHECK(double(newton.mechanics.steps) <= 20.0 * relaxations);
+  CHECK(newton.mechanics.newton_fallbacks == 0);
+  // The same equilibrium: the displacements agree to the viscous relaxation's tolerance.
+  const Nodes& a = results[0].nodes;
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    largest = std::max(largest, std::hypot(a.x[i] - a.x0[i], a.y[i] - a.y0[i]));
+    difference = std::max(difference, std::hypot(a.x[i] - newton.nodes.x[i], a.y[i] - newton.nodes.y[i]));
+  }
+  CHECK(difference <= 1e-4 * largest);
+}
+
+TEST_CASE("the tangent is the derivative of the element and joint forces: K du predicts the change of force",
+          "[newton]") {
+  // A deformed, cracking layer (joints on every branch of their law): from its state, a small
+  // move du of every free component changes the element and joint forces by -K du, to second
+  // order in du.
+  const Deck deck = load_deck(ydry_test::kPeronDeck, ydry_test::kCrackingLayer);
+  State s = setup_state(deck);
+  advance_to(s, deck, 2000.0, coupling_step_limit(s, deck));
+  const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
+  const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, nullptr, free);
+  // The forces of the elements and joints alone, at the free components.
+  const auto forces = [&](const State& at) {
+    State t = at;
+    t.contact.penalty_pa = 0.0;  // contact is not in the tangent
+    t.mechanics.gravity_x = t.mechanics.gravity_y = 0.0;
+    compute_forces(t, 0.0, FrictionUpdate::at_equilibrium);
+    Eigen::VectorXd f(Eigen::Index(free.size()));
+    for (std::size_t u = 0; u < free.size(); ++u) {
+      const index_t c = free.component[u];
+      f[Eigen::Index(u)] = c % 2 == 0 ? t.nodes.fx[c / 2] : t.nodes.fy[c / 2];
+    }
+    return f;
+  };
+  Eigen::VectorXd du(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) du[Eigen::Index(u)] = 1e-9 * std::sin(0.7 * double(u));
+  for (const double scale : {1.0, 0.5}) {
+    State moved = s;
+    for (std::size_t u = 0; u < free.size(); ++u) {
+      const index_t c = free.component[u];
+      (c % 2 == 0 ? moved.nodes.x : moved.nodes.y)[c / 2] += scale * du[Eigen::Index(u)];
+    }
+    const Eigen::VectorXd change = forces(moved) - forces(s);
+    const Eigen::VectorXd predicted = -(K * (scale * du));
+    INFO("scale " << scale);
+    CHECK((change - predicted).norm() <= 0.05 * predicted.norm());
+  }
+}
+
+TEST_CASE("a cracking run relaxed by Newton ends in a bitwise identical state on 1 and 2 threads",
+          "[newton][threads]") {
+  std::vector<std::string> sets = ydry_test::kCrackingLayer;
+  sets.push_back("solver.relaxation=\"newton\"");
+  const Deck deck = load_deck(ydry_test::kPeronDeck, sets);
+  ydry_test::Snapshot state[2];
+  ydry_test::on_1_and_2_threads([&](int threads) {
+    State s = setup_state(deck);
+    advance_to(s, deck, deck.end_time_s, coupling_step_limit(s, deck));
+    state[threads - 1] = ydry_test::state_snapshot(s);
+  });
+  const std::vector<double>& broken = state[0]["joints.broken"];
+  CHECK(std::count(broken.begin(), broken.end(), 1.0) >= 1);
+  for (const auto& [name, values] : state[0]) {
+    INFO(name);
+    CHECK(ydry_test::same_bits(values, state[1][name]));
+  }
+}

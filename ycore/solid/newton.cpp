@@ -1,0 +1,161 @@
+#include "ycore/solid/newton.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ycore/solid/joint_forces.h"
+#include "ycore/solid/tangent.h"
+
+namespace ydry {
+namespace {
+
+// The trust region's mu, relative to the mean of diag K / diag M: from this small start (a
+// Newton step where K is positive definite), times 10 on each refusal, divided by 10 after
+// each accepted step, given up above kMaxMu (the step is then a thousandth of a free fall's).
+constexpr double kMinMu = 1e-10, kMaxMu = 1e6;
+// An update is accepted when it lowers |f|^2 by at least this share of the drop a linear
+// model promises (Armijo's rule on the residual).
+constexpr double kSufficientDecrease = 1e-4;
+// Force evaluations after which Newton leaves the rest to FIRE (within solver.relaxation_max_steps).
+constexpr std::int64_t kMaxEvaluations = 100;
+
+// What a trial step changes beyond the positions, kept to undo a refused one.
+struct Undo {
+  std::vector<double> x, y, joint_force, joint_work;
+  Contact contact;
+  Undo(const Nodes& n, const Joints& jt, const Contact& c)
+      : x(n.x), y(n.y), joint_force(jt.force), joint_work(jt.work), contact(c) {}
+  void restore(Nodes& n, Joints& jt, Contact& c) const {
+    n.x = x, n.y = y, jt.force = joint_force, jt.work = joint_work, c = contact;
+  }
+};
+
+// Moves the free components by du from `from`, as a velocity du over a unit pseudo-step, so that
+// the next force evaluation (dt = 1) moves the friction slip and books the work over it.
+void move_by(const FreeComponents& free, const Eigen::VectorXd& du, const Undo& from, Nodes& n) {
+  n.x = from.x, n.y = from.y;
+  std::fill(n.vx.begin(), n.vx.end(), 0.0);
+  std::fill(n.vy.begin(), n.vy.end(), 0.0);
+  for (std::size_t u = 0; u < free.size(); ++u) {
+    const index_t c = free.component[u], i = c / 2;
+    if (c % 2 == 0)
+      n.x[i] += du[Eigen::Index(u)], n.vx[i] = du[Eigen::Index(u)];
+    else
+      n.y[i] += du[Eigen::Index(u)], n.vy[i] = du[Eigen::Index(u)];
+  }
+}
+
+// The longest move of a node in du: kept within the contact buffer, so that the broad phase,
+// which keeps the pairs within two buffers, sees every surface a step brings a corner to.
+double longest_move(const FreeComponents& free, const Eigen::VectorXd& du, const Nodes& n) {
+  std::vector<double> move2(n.size(), 0.0);
+  for (std::size_t u = 0; u < free.size(); ++u) move2[free.component[u] / 2] += du[Eigen::Index(u)] * du[Eigen::Index(u)];
+  return std::sqrt(*std::max_element(move2.begin(), move2.end()));
+}
+
+// The work done on each intact joint of a material with mechanics along the straight path of
+// its nodes from (x_from, y_from) to where they are, by 8-point Gauss-Legendre quadrature of
+// the joint's forces (its committed damage held): the joints' work booked between equilibria.
+void book_joint_work(const Nodes& n, const Mechanics& mech, const std::vector<MaterialModel>& materials,
+                     const std::vector<double>& x_from, const std::vector<double>& y_from, Joints& jt) {
+  static constexpr double kPoint[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
+                                       0.4082826787521751, 0.5917173212478249, 0.7627662049581645,
+                                       0.8983332387068134, 0.9801449282487681};
+  static constexpr double kWeight[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436,
+                                        0.1813418916891810, 0.1813418916891810, 0.1568533229389436,
+                                        0.1111905172266872, 0.0506142681451881};
+#pragma omp parallel for schedule(static) if (jt.size() > parallel_minimum)
+  for (std::size_t j = 0; j < jt.size(); ++j) {
+    if (jt.broken[j] || !materials[jt.material[j]].mechanical) continue;
+    const index_t* node = &jt.node[4 * j];
+    double dx[4], dy[4], x[4], y[4], f[8], work = 0.0;
+    for (int k = 0; k < 4; ++k) dx[k] = n.x[node[k]] - x_from[node[k]], dy[k] = n.y[node[k]] - y_from[node[k]];
+    for (int q = 0; q < 8; ++q) {
+      for (int k = 0; k < 4; ++k) x[k] = x_from[node[k]] + kPoint[q] * dx[k], y[k] = y_from[node[k]] + kPoint[q] * dy[k];
+      joint_nodal_forces_at(jt, mech, materials, j, x, y, f);
+      double power = 0.0;
+      for (int k = 0; k < 4; ++k) power += f[2 * k] * dx[k] + f[2 * k + 1] * dy[k];
+      work -= kWeight[q] * power;
+    }
+    jt.work[j] += work;
+  }
+}
+
+Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
+  Eigen::VectorXd f(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) {
+    const index_t c = free.component[u];
+    f[Eigen::Index(u)] = c % 2 == 0 ? n.fx[c / 2] : n.fy[c / 2];
+  }
+  return f;
+}
+
+}  // namespace
+
+NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, const ForceMeasures& start,
+                                 const std::vector<double>& joint_work) {
+  Nodes& n = s.nodes;
+  const FreeComponents free = free_components(n, s.triangles, s.materials);
+  Eigen::VectorXd mass(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) mass[Eigen::Index(u)] = n.m[free.component[u] / 2];
+  const double damping = s.contact.damping_ratio;
+  s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
+  NewtonOutcome out;
+  out.measures = start;
+  const std::int64_t cap = std::min<std::int64_t>(kMaxEvaluations, controls.max_steps);
+  const auto balanced = [&](const ForceMeasures& m) {
+    return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
+  };
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
+  bool analysed = false;
+  double mu = kMinMu;
+  while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
+    const Eigen::SparseMatrix<double> K = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, &s.contact, free);
+    const double scale = K.diagonal().sum() / mass.sum();
+    const Eigen::VectorXd f = out_of_balance(free, n);
+    const Undo undo(n, s.joints, s.contact);
+    bool accepted = false;
+    while (!accepted && mu <= kMaxMu && out.iterations < cap) {
+      Eigen::SparseMatrix<double> A = K;
+      A.diagonal() += mu * scale * mass;
+      if (!analysed) solver.analyzePattern(A), analysed = true;
+      solver.factorize(A);
+      ++out.factorisations;
+      if (solver.info() != Eigen::Success || solver.vectorD().minCoeff() <= 0.0) {
+        mu *= 10.0;
+        continue;
+      }
+      Eigen::VectorXd du = solver.solve(f);
+      const double move = longest_move(free, du, n);
+      if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
+      move_by(free, du, undo, n);
+      const ForceMeasures trial = compute_forces(s, 1.0, FrictionUpdate::at_equilibrium);
+      ++out.iterations;
+      // A linear model promises |f - K du|^2; refuse a step that does not keep part of that.
+      const double promised = out.measures.net2 - (f - K * du).squaredNorm();
+      if (std::isfinite(trial.net2) && trial.net2 <= out.measures.net2 - kSufficientDecrease * std::max(promised, 0.0) &&
+          trial.net2 < out.measures.net2) {
+        accepted = true;
+        out.measures = trial;
+        mu = std::max(mu / 10.0, kMinMu);
+      } else {
+        undo.restore(n, s.joints, s.contact);
+        mu *= 10.0;
+      }
+    }
+    if (!accepted) {  // the forces of the state kept
+      out.measures = compute_forces(s, 0.0, FrictionUpdate::at_equilibrium);
+      break;
+    }
+  }
+  std::fill(n.vx.begin(), n.vx.end(), 0.0);
+  std::fill(n.vy.begin(), n.vy.end(), 0.0);
+  s.contact.damping_ratio = damping;
+  s.joints.work = joint_work;
+  book_joint_work(n, s.mechanics, s.materials, s.mechanics.x_start, s.mechanics.y_start, s.joints);
+  return out;
+}
+
+}  // namespace ydry

@@ -1,0 +1,35 @@
+// The Newton equilibrium solver of the quasi-static solid (solver.relaxation = "newton";
+// doc/physics.md "Quasi-static equilibrium").
+#pragma once
+
+#include <cstdint>
+
+#include "ycore/solid/relaxation.h"
+#include "ycore/solid/solid_forces.h"
+#include "ycore/state/state.h"
+
+namespace ydry {
+
+struct NewtonOutcome {
+  bool converged = false;
+  std::int64_t iterations = 0;      // force evaluations of trial states
+  std::int64_t factorisations = 0;
+  ForceMeasures measures;           // of the state reached
+};
+
+// From the current positions, at rest, whose forces `start` measured, to equilibrium by Newton
+// iterations on the out-of-balance force: (K + mu M) du = f with K the tangent of the element
+// and joint forces (tangent.h) and M the nodes' masses, mu raised where K + mu M is not
+// positive definite or a step does not reduce |f| (a trust region in the metric of M, which
+// also holds a body that only contact keeps in place), and lowered after each step that does.
+// Each accepted step moves the contacts' friction slip with the displacement and books the
+// contacts' work by the trapezoid over it. The joints' work is booked between equilibria: from
+// `joint_work`, the joints' work when the relaxation began, along the straight path from
+// mechanics.x_start, y_start to the state reached. A phase, like relax: it writes what
+// compute_forces writes. Stops unconverged after 100 force evaluations (or
+// controls.max_steps) or when mu grows beyond any use; the caller then relaxes on from the
+// state reached.
+NewtonOutcome newton_equilibrium(State& state, const RelaxationControls& controls, const ForceMeasures& start,
+                                 const std::vector<double>& joint_work);
+
+}  // namespace ydry

@@ -1,0 +1,32 @@
+// The tangent stiffness of the solid for the Newton equilibrium solver (newton.cpp;
+// doc/physics.md "Quasi-static equilibrium").
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+#include "ycore/state/state.h"
+
+namespace ydry {
+
+// The unknowns of the equilibrium: every force component of a node of a mechanical material
+// that is not prescribed (fixed or driven), numbered in node order, x before y.
+struct FreeComponents {
+  std::vector<index_t> unknown;    // [2 * nodes]: 2 i + axis -> its unknown, kNoIndex if none
+  std::vector<index_t> component;  // [unknowns]: unknown -> 2 i + axis
+  std::size_t size() const { return component.size(); }
+};
+FreeComponents free_components(const Nodes& nodes, const Triangles& triangles,
+                               const std::vector<MaterialModel>& materials);
+
+// K = -df/dx of the element and intact-joint forces on the free components, symmetrised, by
+// central differences of each triangle's and joint's own forces in its own coordinates, so
+// that it is the derivative of exactly the forces the kernels compute, on every branch of the
+// joint law; with `contact`, the stiffness of the pairs that carry a force
+// (ycore/contact/contact_tangent.h). The same bits on any number of threads.
+Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& nodes, const Triangles& triangles, const Joints& joints,
+                                              const Mechanics& mechanics, const std::vector<MaterialModel>& materials,
+                                              const Contact* contact, const FreeComponents& free);
+
+}  // namespace ydry
