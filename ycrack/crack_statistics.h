@@ -1,5 +1,5 @@
 // Cracks: connected sets of broken joints, each measured at its mouth, for series.csv and
-// cracks.csv (doc/physics.md "Crack statistics").
+// cracks.csv (doc/measures.md "Crack statistics").
 #pragma once
 
 #include <vector>

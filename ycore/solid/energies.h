@@ -1,5 +1,5 @@
 // The solid's energy ledger, logged and written to series.csv (energies.cpp;
-// doc/physics.md "Energies and water balance").
+// doc/measures.md "Energies and water balance").
 #pragma once
 
 #include "ycore/state/state.h"

@@ -11,7 +11,7 @@ namespace ydry {
 // Commits each joint point's damage (maximum over time) at the current positions and breaks,
 // for good, every joint with two of its three points at D = 1: writes joints.damage and
 // joints.broken. Returns the number of joints that broke. Called at equilibrium only
-// (doc/physics.md "Quasi-static equilibrium").
+// (doc/solver.md "Quasi-static equilibrium").
 std::size_t commit_joint_damage(const Nodes& nodes, const Ownership& ownership,
                                 const std::vector<MaterialModel>& materials, Joints& joints);
 

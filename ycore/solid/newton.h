@@ -1,5 +1,5 @@
 // The Newton equilibrium solver of the quasi-static solid (solver.relaxation = "newton";
-// doc/physics.md "Quasi-static equilibrium").
+// doc/solver.md "Quasi-static equilibrium").
 #pragma once
 
 #include <cstdint>

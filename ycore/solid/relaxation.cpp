@@ -1,4 +1,4 @@
-// Quasi-static relaxation of the solid (doc/physics.md "Quasi-static equilibrium"; a step of
+// Quasi-static relaxation of the solid (doc/solver.md "Quasi-static equilibrium"; a step of
 // the coupling loop, doc/architecture.md "A coupling step").
 //
 // Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
@@ -133,7 +133,7 @@ void start_motion(const Nodes& n, const Ownership& ownership, Mechanics& mech) {
 // slip are committed from the relaxed state only, so a prediction that overshoots leaves no
 // trace. (A friction that slid at every pseudo-step would keep it: a block that slid in one
 // relaxation would be carried on by the next prediction and held where it was put, a ratchet
-// that walks a block on after the drying has stopped; doc/physics.md "Quasi-static
+// that walks a block on after the drying has stopped; doc/solver.md "Quasi-static
 // equilibrium".) Like the driven nodes' jump, the prediction is seen as a velocity by one force
 // evaluation, so the joints and contacts book its work; prescribed components start at rest.
 //

@@ -1,5 +1,5 @@
 // Bringing the solid to equilibrium after each step of the moisture clock (relaxation.cpp;
-// doc/physics.md "Quasi-static equilibrium" and "Dynamic integration", doc/architecture.md
+// doc/solver.md "Quasi-static equilibrium" and "Dynamic integration", doc/architecture.md
 // "A coupling step").
 //
 // relax and move_dynamically are phases, not kernels: each runs the element, joint and contact

@@ -1,6 +1,6 @@
 // One evaluation of the solid's forces: elements, joints and contact, gathered into the
 // nodes' net force with the measures the equilibrium solvers steer by (relaxation.cpp,
-// newton.cpp; doc/physics.md "Quasi-static equilibrium").
+// newton.cpp; doc/solver.md "Quasi-static equilibrium").
 #pragma once
 
 #include <cmath>

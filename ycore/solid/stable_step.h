@@ -1,5 +1,5 @@
 // The stable step of the explicit integration, and the node masses of a quasi-static run
-// (stable_step.cpp; doc/physics.md "Quasi-static equilibrium" and "Dynamic integration").
+// (stable_step.cpp; doc/solver.md "Quasi-static equilibrium" and "Dynamic integration").
 //
 // Each function reads the initial geometry, constraints and joint slots of the nodes, the
 // triangles' materials and areas, the materials' constants, the thickness (mechanics) and the

@@ -1,5 +1,5 @@
 // The tangent stiffness of the solid for the Newton equilibrium solver (newton.cpp;
-// doc/physics.md "Quasi-static equilibrium").
+// doc/solver.md "Quasi-static equilibrium").
 #pragma once
 
 #include <Eigen/SparseCore>

@@ -134,7 +134,7 @@ struct MoistureElements {
   std::vector<double> corner_inflow;  // scratch: [3 * triangles] kg/s into each corner
 };
 
-// Water bookkeeping for water_balance_error (doc/physics.md "Energies and water balance"),
+// Water bookkeeping for water_balance_error (doc/measures.md "Energies and water balance"),
 // compensated sums. Totals.
 struct WaterBalance {
   double initial_kg = 0;     // water in the soil at t = 0
