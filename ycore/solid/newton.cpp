@@ -109,18 +109,19 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
-  bool analysed = false;
   double mu = kMinMu;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
     const Eigen::SparseMatrix<double> K = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, &s.contact, free);
     const double scale = K.diagonal().sum() / mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);
     const Undo undo(n, s.joints, s.contact);
+    // The pattern changes with the pressing contacts; every free component has its diagonal
+    // entry (its triangle's), which mu M adds to.
+    solver.analyzePattern(K);
     bool accepted = false;
     while (!accepted && mu <= kMaxMu && out.iterations < cap) {
       Eigen::SparseMatrix<double> A = K;
       A.diagonal() += mu * scale * mass;
-      if (!analysed) solver.analyzePattern(A), analysed = true;
       solver.factorize(A);
       ++out.factorisations;
       if (solver.info() != Eigen::Success || solver.vectorD().minCoeff() <= 0.0) {
