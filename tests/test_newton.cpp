@@ -45,7 +45,9 @@ TEST_CASE("Newton brings a drying elastic block to equilibrium in a few iteratio
   const double relaxations = double(newton.coupling_steps + 1);  // and the initial equilibrium
   CHECK(double(newton.mechanics.steps) <= 20.0 * relaxations);
   CHECK(newton.mechanics.newton_fallbacks == 0);
-  // The same equilibrium: the displacements agree to the viscous relaxation's tolerance.
+  // The same equilibrium: the displacements agree to 1e-4 of the largest. Both end where the
+  // out-of-balance force is at most ten times what the coordinates' round-off makes through the
+  // 1000 E joint penalties (the round-off floor); measured 9.5e-6.
   const Nodes& a = results[0].nodes;
   double largest = 0, difference = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -58,8 +60,12 @@ TEST_CASE("Newton brings a drying elastic block to equilibrium in a few iteratio
 TEST_CASE("the tangent is the derivative of the element and joint forces: K du predicts the change of force",
           "[newton]") {
   // A deformed, cracking layer (joints on every branch of their law): from its state, a small
-  // move du of every free component changes the element and joint forces by -K du, to second
-  // order in du.
+  // move du of every free component changes the element and joint forces by -K du, up to
+  // terms of second order in du and to what symmetrising K leaves out (the shear strength's
+  // rise with compression, tan(phi) of the normal stiffness at joints sheared near their
+  // peak). So the relative error e(du) = |change + K du| / |K du| falls as du halves, and
+  // extrapolated to du -> 0 (2 e(du/2) - e(du)) it is the asymmetric part alone, a small
+  // share of K. Measured: 1.5e-2 and 0.91e-2 at du and du/2, so 3.6e-3 at du -> 0.
   const Deck deck = load_deck(ydry_test::kPeronDeck, ydry_test::kCrackingLayer);
   State s = setup_state(deck);
   advance_to(s, deck, 2000.0, coupling_step_limit(s, deck));
@@ -80,6 +86,7 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
   };
   Eigen::VectorXd du(Eigen::Index(free.size()));
   for (std::size_t u = 0; u < free.size(); ++u) du[Eigen::Index(u)] = 1e-9 * std::sin(0.7 * double(u));
+  double error[2];
   for (const double scale : {1.0, 0.5}) {
     State moved = s;
     for (std::size_t u = 0; u < free.size(); ++u) {
@@ -88,9 +95,10 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
     }
     const Eigen::VectorXd change = forces(moved) - forces(s);
     const Eigen::VectorXd predicted = -(K * (scale * du));
-    INFO("scale " << scale);
-    CHECK((change - predicted).norm() <= 0.05 * predicted.norm());
+    error[scale < 1.0] = (change - predicted).norm() / predicted.norm();
   }
+  CHECK(error[1] < error[0]);
+  CHECK(2.0 * error[1] - error[0] <= 1e-2);
 }
 
 TEST_CASE("a cracking run relaxed by Newton ends in a bitwise identical state on 1 and 2 threads",

@@ -9,6 +9,12 @@ namespace {
 
 constexpr double kOnEdge = 1e-6;  // |gap| / edge length of a corner that lies on the edge
 
+// A corner that lies on the edge without pressing (a conforming interface at rest) is closed
+// too: without it a body that only contact holds has no stiffness at all.
+bool lies_on_edge(const EdgeProjection& at) {
+  return at.along >= 0.0 && at.along <= 1.0 && std::fabs(at.gap) <= kOnEdge * at.length;
+}
+
 // stiffness B B^T into the entries, B = [d, -a d, -b d] over the corner and the edge's ends.
 void add_penalty(const index_t receivers[3], const double share[3], double dx, double dy, double stiffness,
                  const std::vector<index_t>& unknown, std::vector<Eigen::Triplet<double>>& entries) {
@@ -29,14 +35,19 @@ void add_contact_tangent(const Nodes& n, const Triangles& tri, const Mechanics& 
                          const std::vector<index_t>& unknown, std::vector<Eigen::Triplet<double>>& entries) {
   const std::size_t material_count = std::size_t(std::lround(std::sqrt(double(c.tan_friction.size()))));
   const double half_penalty = 0.5 * c.penalty_pa * mech.thickness_m;
-  for (std::size_t p = 0; p < c.pair_node.size(); ++p) {
-    const double* force = &c.pair_force[6 * p];
-    const index_t i = c.pair_node[p], e = c.pair_edge[p];
+  const std::size_t pairs = c.pair_node.size();
+  // Pairs are sorted by corner; a corner presses through one of them at most (contact_forces)
+  // and is counted once: by its pressing pair, else by the first edge it lies on.
+  for (std::size_t first = 0, last; first < pairs; first = last) {
+    std::size_t chosen = pairs;
+    for (last = first; last < pairs && c.pair_node[last] == c.pair_node[first]; ++last) {
+      if (c.pair_force[6 * last] != 0.0 || c.pair_force[6 * last + 1] != 0.0) chosen = last;
+      else if (chosen == pairs && lies_on_edge(project(n, c.pair_node[last], c.pair_edge[last]))) chosen = last;
+    }
+    if (chosen == pairs) continue;
+    const double* force = &c.pair_force[6 * chosen];
+    const index_t i = c.pair_node[chosen], e = c.pair_edge[chosen];
     const EdgeProjection at = project(n, i, e);
-    // A corner that lies on the edge without pressing (a conforming interface at rest) is
-    // closed too: without it a body that only contact holds has no stiffness at all.
-    const bool on_edge = at.along >= 0.0 && at.along <= 1.0 && std::fabs(at.gap) <= kOnEdge * at.length;
-    if (force[0] == 0.0 && force[1] == 0.0 && !on_edge) continue;
     const index_t receivers[3] = {i, e, next_corner(e)};
     const double share[3] = {1.0, -(1.0 - at.along), -at.along};
     const double stiffness = half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);

@@ -10,7 +10,8 @@
 
 namespace ydry {
 
-// K = -df/dx of every pair that carries a force (contact_forces made it at these positions),
+// K = -df/dx of the pair each corner presses through (contact_forces made the forces at these
+// positions), or of the first edge it lies on without pressing,
 // linearised about the edge as it lies: the penalty p B B^T along the edge's normal and, for
 // a pair that sticks, along its tangent (the elastic slip), B the corner's motion less the
 // edge's at the projection. A sliding pair's friction, which follows the normal force, and the

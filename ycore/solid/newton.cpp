@@ -49,10 +49,16 @@ void move_by(const FreeComponents& free, const Eigen::VectorXd& du, const Undo& 
 
 // The longest move of a node in du: kept within the contact buffer, so that the broad phase,
 // which keeps the pairs within two buffers, sees every surface a step brings a corner to.
-double longest_move(const FreeComponents& free, const Eigen::VectorXd& du, const Nodes& n) {
-  std::vector<double> move2(n.size(), 0.0);
-  for (std::size_t u = 0; u < free.size(); ++u) move2[free.component[u] / 2] += du[Eigen::Index(u)] * du[Eigen::Index(u)];
-  return std::sqrt(*std::max_element(move2.begin(), move2.end()));
+// A node's unknowns are consecutive (free_components numbers them in node order).
+double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
+  double longest2 = 0.0;
+  for (std::size_t u = 0; u < free.size();) {
+    const index_t node = free.component[u] / 2;
+    double move2 = 0.0;
+    for (; u < free.size() && free.component[u] / 2 == node; ++u) move2 += du[Eigen::Index(u)] * du[Eigen::Index(u)];
+    longest2 = std::max(longest2, move2);
+  }
+  return std::sqrt(longest2);
 }
 
 // The work done on each intact joint of a material with mechanics along the straight path of
@@ -129,7 +135,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
         continue;
       }
       Eigen::VectorXd du = solver.solve(f);
-      const double move = longest_move(free, du, n);
+      const double move = longest_move(free, du);
       if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
       move_by(free, du, undo, n);
       const ForceMeasures trial = compute_forces(s, 1.0, FrictionUpdate::at_equilibrium);

@@ -3,7 +3,7 @@
 //
 // Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
 // from the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
-// brought to rest by one of two methods (solver.relaxation):
+// brought to rest by one of three methods (solver.relaxation):
 //
 // - "viscous" (default): mass-proportional damping c = 2 omega, omega^2 the Rayleigh quotient
 //   -v.(f_new - f_old) / (dt v.M v) of the last step's motion (Underwood's adaptive dynamic
@@ -22,11 +22,12 @@
 //   The pseudo-step grows by 1.1 a step (after the same 5) up to the stable one and halves
 //   at each restart. It reaches the tolerance in many relaxations where the damping stops
 //   at the cap, in fewer steps.
+// - "newton": Newton iterations on the out-of-balance force (newton.h), FIRE where they stop.
 //
 // Only the equilibrium reached means anything; the path in pseudo-time does not. The state
 // with history is committed from the equilibrium alone: the joints' damage
 // (commit_joint_damage, joint_damage.h) and the friction's slip
-// (FrictionUpdate::at_equilibrium), so the two methods find the same equilibria where both
+// (FrictionUpdate::at_equilibrium), so the methods find the same equilibria where they
 // converge.
 #include "ycore/solid/relaxation.h"
 
@@ -37,12 +38,10 @@
 
 #include "ycore/contact/contact_forces.h"
 #include "ycore/solid/element_forces.h"
-#include "ycore/solid/joint_forces.h"
 #include "ycore/solid/newton.h"
 #include "ycore/solid/numerical_failure.h"
 #include "ycore/solid/solid_forces.h"
 #include "ycore/state/blocked_sum.h"
-#include "ycore/state/stage_timing.h"
 
 namespace ydry {
 namespace {
