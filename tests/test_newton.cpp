@@ -70,7 +70,7 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
   State s = setup_state(deck);
   advance_to(s, deck, 2000.0, coupling_step_limit(s, deck));
   const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
-  const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, nullptr, free);
+  const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
   // The forces of the elements and joints alone, at the free components.
   const auto forces = [&](const State& at) {
     State t = at;

@@ -3,6 +3,7 @@
 // number of threads (doc/threading.md "Gather, not scatter").
 #include "ycore/contact/contact_forces.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ycore/contact/contact_geometry.h"
@@ -11,26 +12,6 @@
 
 namespace ydry {
 namespace {
-
-constexpr double kFacing = 0.17;  // cos 80 degrees
-
-// In contact: the corner projects onto the edge and lies inside, less than half the edge's
-// length deep (deeper, it is a corner of the far side of a thin body), and one of its own
-// surface edges faces the edge within 80 degrees of head-on. (A corner of a flat surface that
-// a block's corner slides over lies, by the penalty's give, just inside the block's side
-// too; its own surface is at right angles to that side, and the block's bottom, which it
-// does face, carries the contact.)
-bool touches(const Nodes& n, const Contact& c, index_t i, const EdgeProjection& p) {
-  if (!(p.along >= 0.0 && p.along <= 1.0 && p.gap < 0.0 && p.gap > -0.5 * p.length)) return false;
-  for (const index_t e : {previous_corner(i), i}) {
-    if (!c.is_surface_edge[e]) continue;
-    const index_t f = next_corner(e);
-    const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
-    // Own outward normal (ey, -ex) / |e| against the edge's (ty, -tx).
-    if (ey * p.ty + ex * p.tx < -kFacing * std::sqrt(ex * ex + ey * ey)) return true;
-  }
-  return false;
-}
 
 // Nothing to do at the corner: it is clearly outside every edge it is paired with, and no pair
 // carries a force (whose work over the step would need booking) or a friction slip.
@@ -63,14 +44,7 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
     // and book zero work; skipping them leaves every bit as it was.
     if (idle_corner(n, c, first, last)) return;
     const index_t i = c.pair_node[first];
-    // Of the edges it touches, the one it is least deep in: the surface it came through (at a
-    // junction of two edges either one, once).
-    index_t active = last;
-    EdgeProjection at;
-    for (index_t p = first; p < last; ++p) {
-      const EdgeProjection q = project(n, i, c.pair_edge[p]);
-      if (touches(n, c, i, q) && (active == last || q.gap > at.gap)) active = p, at = q;
-    }
+    const ContactShares carrying = contact_shares(n, c, i, first, last);
     // Work done on the contacts over the step: the trapezoid of the forces before and after.
     const auto power = [&](index_t p) {
       const double* force = &c.pair_force[6 * std::size_t(p)];
@@ -80,49 +54,60 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
       return sum_fv;
     };
     // The friction slip is the corner's: when its contact passes from one edge to the next
-    // (every corner of a conforming interface sits on a junction of two edges), the slip of the
-    // pair it touched last (the only other pair with one) passes to the new pair, projected on
-    // the new edge. A corner out of contact has none.
+    // (every corner of a conforming interface sits on a junction of two edges), the slip of
+    // the pair it touched before passes to the pairs that take the contact over and have none,
+    // projected on their edges. A corner out of contact has none.
+    const auto carries = [&](index_t p) {
+      return (carrying.count > 0 && carrying.pair[0] == p) || (carrying.count > 1 && carrying.pair[1] == p);
+    };
     for (index_t p = first; p < last; ++p) {
       sum[0] -= 0.5 * power(p) * dt;
       for (int d = 0; d < 6; ++d) c.pair_force[6 * std::size_t(p) + d] = 0.0;
-      if (p == active || c.pair_slip[p] == 0.0) continue;
-      if (active != last) {
+    }
+    for (int k = 0; k < carrying.count; ++k) {
+      if (c.pair_slip[carrying.pair[k]] != 0.0) continue;
+      for (index_t p = first; p < last; ++p) {
+        if (p == carrying.pair[k] || c.pair_slip[p] == 0.0) continue;
         const EdgeProjection before = project(n, i, c.pair_edge[p]);
-        c.pair_slip[active] = c.pair_slip[p] * (before.tx * at.tx + before.ty * at.ty);
+        c.pair_slip[carrying.pair[k]] = c.pair_slip[p] * (before.tx * carrying.at[k].tx + before.ty * carrying.at[k].ty);
+        break;
       }
-      c.pair_slip[p] = 0.0;
     }
-    if (active == last) return;
+    for (index_t p = first; p < last; ++p)
+      if (!carries(p)) c.pair_slip[p] = 0.0;
 
-    const index_t e = c.pair_edge[active], f = next_corner(e);
-    const double stiffness = half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
-    const double a = 1.0 - at.along, b = at.along;                    // shares of e and f
-    const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
-    // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
-    // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
-    // is zero at rest, so equilibria do not depend on it.
-    const double mass = std::max(n.m[i], 0.5 * (n.m[e] + n.m[f]));
-    const double approach = vx * at.ty - vy * at.tx;                  // < 0: closing
-    const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
-    // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
-    // motion and pulls at most mu f_n; it slides, keeping the stretch at the cap, at every
-    // step or only at equilibrium (FrictionUpdate).
-    double& slip = c.pair_slip[active];
-    slip += (vx * at.tx + vy * at.ty) * dt;
-    const double cap = c.tan_friction[tri.material[triangle_of(i)] * material_count +
-                                      tri.material[triangle_of(e)]] * normal;
-    double tangential = -stiffness * slip;
-    if (std::fabs(tangential) > cap) {
-      tangential = std::copysign(cap, tangential);
-      if (friction == FrictionUpdate::every_step) slip = -tangential / stiffness;
+    const double corner_stiffness = half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
+    for (int k = 0; k < carrying.count; ++k) {
+      const index_t active = carrying.pair[k];
+      const EdgeProjection& at = carrying.at[k];
+      const index_t e = c.pair_edge[active], f = next_corner(e);
+      const double stiffness = carrying.weight[k] * corner_stiffness;
+      const double b = std::clamp(at.along, 0.0, 1.0), a = 1.0 - b;  // shares of e and f
+      const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
+      // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
+      // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
+      // is zero at rest, so equilibria do not depend on it.
+      const double mass = std::max(n.m[i], 0.5 * (n.m[e] + n.m[f]));
+      const double approach = vx * at.ty - vy * at.tx;  // < 0: closing
+      const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
+      // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
+      // motion and pulls at most mu f_n; it slides, keeping the stretch at the cap, at every
+      // step or only at equilibrium (FrictionUpdate).
+      double& slip = c.pair_slip[active];
+      slip += (vx * at.tx + vy * at.ty) * dt;
+      const double cap = c.tan_friction[tri.material[triangle_of(i)] * material_count + tri.material[triangle_of(e)]] * normal;
+      double tangential = -stiffness * slip;
+      if (std::fabs(tangential) > cap) {
+        tangential = std::copysign(cap, tangential);
+        if (friction == FrictionUpdate::every_step) slip = -tangential / stiffness;
+      }
+      const double fx = normal * at.ty + tangential * at.tx, fy = -normal * at.tx + tangential * at.ty;
+      double* force = &c.pair_force[6 * std::size_t(active)];
+      force[0] = fx, force[1] = fy;
+      force[2] = -a * fx, force[3] = -a * fy;
+      force[4] = -b * fx, force[5] = -b * fy;
+      sum[0] -= 0.5 * power(active) * dt;
     }
-    const double fx = normal * at.ty + tangential * at.tx, fy = -normal * at.tx + tangential * at.ty;
-    double* force = &c.pair_force[6 * std::size_t(active)];
-    force[0] = fx, force[1] = fy;
-    force[2] = -a * fx, force[3] = -a * fy;
-    force[4] = -b * fx, force[5] = -b * fy;
-    sum[0] -= 0.5 * power(active) * dt;
   }, c.corner_owner_begin);
   c.work_J += work[0];
 }

@@ -1,6 +1,7 @@
 // The narrow phase of contact (contact_forces.h): a surface corner against one surface edge.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "ycore/state/state.h"
@@ -37,6 +38,71 @@ inline bool clearly_outside(const Nodes& n, index_t i, index_t e) {
   const double dx = n.x[i] - n.x[e], dy = n.y[i] - n.y[e];
   const double cross = dx * ey - dy * ex;
   return cross > 1e-14 * (std::fabs(dx * ey) + std::fabs(dy * ex));
+}
+
+// The share of the contact a corner projecting at `along` gives an edge: 1 on the edge but
+// within kEndTaper of its length of an end, falling linearly to 0 at kEndTaper past it. A
+// corner passing from an edge to the next across their junction so hands its force over
+// without a jump (doc/physics.md "Contact and friction").
+constexpr double kEndTaper = 0.05;
+inline double end_weight(double along) {
+  return std::clamp(std::min(along + kEndTaper, 1.0 + kEndTaper - along) / (2.0 * kEndTaper), 0.0, 1.0);
+}
+
+// Faces the edge, as contact sees it: the corner projects onto the edge (or its end's taper)
+// and lies less than
+// `reach` outside it (0: inside, in contact) and less than half the edge's length deep
+// (deeper, it is a corner of the far side of a thin body), and one of its own surface edges
+// faces the edge within 80 degrees of head-on. (A corner of a flat surface that a block's
+// corner slides over lies, by the penalty's give, just inside the block's side too; its own
+// surface is at right angles to that side, and the block's bottom, which it does face,
+// carries the contact.)
+inline bool faces_edge(const Nodes& n, const Contact& c, index_t i, const EdgeProjection& p, double reach) {
+  constexpr double kFacing = 0.17;  // cos 80 degrees
+  if (!(end_weight(p.along) > 0.0 && p.gap < reach && p.gap > -0.5 * p.length)) return false;
+  for (const index_t e : {previous_corner(i), i}) {
+    if (!c.is_surface_edge[e]) continue;
+    const index_t f = next_corner(e);
+    const double ex = n.x[f] - n.x[e], ey = n.y[f] - n.y[e];
+    // Own outward normal (ey, -ex) / |e| against the edge's (ty, -tx).
+    if (ey * p.ty + ex * p.tx < -kFacing * std::sqrt(ex * ex + ey * ey)) return true;
+  }
+  return false;
+}
+
+// The pairs that carry a corner's contact and their shares: of the edges it touches, the one
+// it lies least deep in (the surface it came through); where the corner is within the taper
+// of that edge's end, also the least deep other edge it touches nearer that edge's opposite
+// end (the next edge across a junction). Shares over 1 together are scaled to 1.
+struct ContactShares {
+  int count = 0;
+  index_t pair[2] = {0, 0};
+  EdgeProjection at[2];
+  double weight[2] = {0, 0};
+};
+inline ContactShares contact_shares(const Nodes& n, const Contact& c, index_t i, index_t first, index_t last) {
+  ContactShares s;
+  for (index_t p = first; p < last; ++p) {
+    const EdgeProjection q = project(n, i, c.pair_edge[p]);
+    if (faces_edge(n, c, i, q, 0.0) && (s.count == 0 || q.gap > s.at[0].gap)) s.count = 1, s.pair[0] = p, s.at[0] = q;
+  }
+  if (s.count == 0) return s;
+  s.weight[0] = end_weight(s.at[0].along);
+  if (s.weight[0] == 1.0) return s;
+  const bool near_start = s.at[0].along < 0.5;
+  for (index_t p = first; p < last; ++p) {
+    if (p == s.pair[0]) continue;
+    const EdgeProjection q = project(n, i, c.pair_edge[p]);
+    if ((q.along < 0.5) != near_start && faces_edge(n, c, i, q, 0.0) &&
+        (s.count == 1 || q.gap > s.at[1].gap))
+      s.count = 2, s.pair[1] = p, s.at[1] = q;
+  }
+  if (s.count == 2) {
+    s.weight[1] = end_weight(s.at[1].along);
+    const double total = s.weight[0] + s.weight[1];
+    if (total > 1.0) s.weight[0] /= total, s.weight[1] /= total;
+  }
+  return s;
 }
 
 }  // namespace ydry

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ycore/contact/contact_tangent.h"
 #include "ycore/solid/joint_forces.h"
 #include "ycore/solid/tangent.h"
 
@@ -15,11 +16,20 @@ namespace {
 // Newton step where K is positive definite), times 10 on each refusal, divided by 10 after
 // each accepted step, given up above kMaxMu (the step is then a thousandth of a free fall's).
 constexpr double kMinMu = 1e-10, kMaxMu = 1e6;
-// An update is accepted when it lowers |f|^2 by at least this share of the drop a linear
-// model promises (Armijo's rule on the residual).
+// A step is accepted when it lowers the energy by at least this share of what its first-order
+// change promises (Armijo's rule), the energy's change measured by the trapezoid of its slopes
+// -f.du at the two ends (exact where the energy is quadratic along du).
 constexpr double kSufficientDecrease = 1e-4;
 // Force evaluations after which Newton leaves the rest to FIRE (within solver.relaxation_max_steps).
 constexpr std::int64_t kMaxEvaluations = 100;
+// Cuts of a step along its direction before mu is raised: each to the minimum of the quadratic
+// through the slopes at its ends, kept within [0.1, 0.5] of the step.
+constexpr int kMaxCuts = 4;
+// Solves of the model a step, at most, to settle its active contacts.
+constexpr int kMaxActiveSetRounds = 8;
+// Rounds in which a link may open as well as close; after them links only close, so that a set
+// that alternates (it can, a penalty's model being no M-matrix) settles.
+constexpr int kOpeningRounds = 3;
 
 // What a trial step changes beyond the positions, kept to undo a refused one.
 struct Undo {
@@ -89,6 +99,23 @@ void book_joint_work(const Nodes& n, const Mechanics& mech, const std::vector<Ma
   }
 }
 
+using Solver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+// The sparsity pattern the solver's ordering and symbolic factorisation were made for.
+struct Pattern {
+  std::vector<int> outer, inner;
+};
+void analyse_if_new(const Eigen::SparseMatrix<double>& A, Pattern& analysed, Solver& solver) {
+  const auto same = [](const std::vector<int>& kept, const int* now, Eigen::Index size) {
+    return kept.size() == std::size_t(size) && std::equal(kept.begin(), kept.end(), now);
+  };
+  if (same(analysed.outer, A.outerIndexPtr(), A.outerSize() + 1) && same(analysed.inner, A.innerIndexPtr(), A.nonZeros()))
+    return;
+  solver.analyzePattern(A);
+  analysed.outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+  analysed.inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+}
+
 Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
   Eigen::VectorXd f(Eigen::Index(free.size()));
   for (std::size_t u = 0; u < free.size(); ++u) {
@@ -98,14 +125,75 @@ Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
   return f;
 }
 
+
+// K_solid plus the links' stiffness (explicit zeros for the inactive: one pattern for all).
+Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
+                                          const std::vector<std::uint8_t>& active, const FreeComponents& free) {
+  std::vector<Eigen::Triplet<double>> entries;
+  add_link_stiffness(links, active, free.unknown, entries);
+  Eigen::SparseMatrix<double> K(K_solid.rows(), K_solid.cols());
+  K.setFromTriplets(entries.begin(), entries.end());
+  return K_solid + K;
+}
+
+// The free components' mass and the trust region's unit (mean diag K / diag M).
+struct Metric {
+  Eigen::VectorXd mass;
+  double scale = 0;
+};
+
+// The step to the minimum of the piecewise-linear model of the forces at mu: the links active
+// where the step closes them, found by solving again until the set holds (a primal-dual
+// active set). Empty where K_solid + links + mu M is not positive definite.
+Eigen::VectorXd model_step(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
+                           const FreeComponents& free, const Eigen::VectorXd& f, const Metric& metric, double mu,
+                           std::vector<std::uint8_t>& active, Solver& solver, NewtonOutcome& out) {
+  Eigen::VectorXd du;
+  for (int round = 0; round < kMaxActiveSetRounds; ++round) {
+    Eigen::SparseMatrix<double> A = model_tangent(K_solid, links, active, free);
+    A.diagonal() += mu * metric.scale * metric.mass;
+    solver.factorize(A);
+    ++out.factorisations;
+    if (solver.info() != Eigen::Success || !(solver.vectorD().minCoeff() > 0.0)) return {};
+    Eigen::VectorXd rhs = f;
+    model_link_forces(links, active, free.unknown, rhs);
+    du = solver.solve(rhs);
+    if (update_active_links(links, du, free.unknown, round < kOpeningRounds, active) == 0) break;
+  }
+  return du;
+}
+
+// Tries du from the state `from` and cuts it back along its direction until the energy falls
+// enough (kSufficientDecrease); true with the state moved and its forces in out.measures,
+// false with the state as it was.
+bool line_search(State& s, const FreeComponents& free, const Eigen::VectorXd& f, const Eigen::VectorXd& du,
+                 const Undo& from, std::int64_t cap, double& step, NewtonOutcome& out) {
+  const double slope0 = -f.dot(du);  // the energy's slope along du, < 0 for a descent direction
+  step = 1.0;
+  for (int cut = 0; cut < kMaxCuts && out.iterations < cap; ++cut) {
+    move_by(free, step * du, from, s.nodes);
+    const ForceMeasures trial = compute_forces(s, 1.0, FrictionUpdate::at_equilibrium);
+    ++out.iterations;
+    const double slope = -out_of_balance(free, s.nodes).dot(du);
+    if (std::isfinite(trial.net2) && 0.5 * (slope0 + slope) <= kSufficientDecrease * slope0) {
+      out.measures = trial;
+      return true;
+    }
+    from.restore(s.nodes, s.joints, s.contact);
+    step *= std::clamp(std::isfinite(slope) ? slope0 / (slope0 - slope) : 0.0, 0.1, 0.5);
+  }
+  return false;
+}
+
 }  // namespace
 
 NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, const ForceMeasures& start,
                                  const std::vector<double>& joint_work) {
   Nodes& n = s.nodes;
   const FreeComponents free = free_components(n, s.triangles, s.materials);
-  Eigen::VectorXd mass(Eigen::Index(free.size()));
-  for (std::size_t u = 0; u < free.size(); ++u) mass[Eigen::Index(u)] = n.m[free.component[u] / 2];
+  Metric metric;
+  metric.mass.resize(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) metric.mass[Eigen::Index(u)] = n.m[free.component[u] / 2];
   const double damping = s.contact.damping_ratio;
   s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
   NewtonOutcome out;
@@ -114,43 +202,33 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   const auto balanced = [&](const ForceMeasures& m) {
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
+  Solver solver;
+  Pattern pattern;
   double mu = kMinMu;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
-    const Eigen::SparseMatrix<double> K = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, &s.contact, free);
-    const double scale = K.diagonal().sum() / mass.sum();
+    const Eigen::SparseMatrix<double> K_solid = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free);
+    metric.scale = K_solid.diagonal().sum() / metric.mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);
     const Undo undo(n, s.joints, s.contact);
-    // The pattern changes with the pressing contacts; every free component has its diagonal
-    // entry (its triangle's), which mu M adds to.
-    solver.analyzePattern(K);
+    // Every corner within the contact buffer of an edge: no step moves a node farther.
+    const std::vector<ContactLink> links = contact_links(n, s.triangles, s.mechanics, s.contact, s.contact.buffer_m);
+    std::vector<std::uint8_t> active = links_in_contact(links);
+    // The pattern is the same whichever links are active; the ordering is found again only
+    // when it changes (a joint breaks, a pair comes near).
+    analyse_if_new(model_tangent(K_solid, links, active, free), pattern, solver);
     bool accepted = false;
     while (!accepted && mu <= kMaxMu && out.iterations < cap) {
-      Eigen::SparseMatrix<double> A = K;
-      A.diagonal() += mu * scale * mass;
-      solver.factorize(A);
-      ++out.factorisations;
-      if (solver.info() != Eigen::Success || solver.vectorD().minCoeff() <= 0.0) {
+      Eigen::VectorXd du = model_step(K_solid, links, free, f, metric, mu, active, solver, out);
+      if (du.size() == 0 || !(f.dot(du) > 0.0)) {  // not positive definite, or uphill
         mu *= 10.0;
         continue;
       }
-      Eigen::VectorXd du = solver.solve(f);
       const double move = longest_move(free, du);
       if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
-      move_by(free, du, undo, n);
-      const ForceMeasures trial = compute_forces(s, 1.0, FrictionUpdate::at_equilibrium);
-      ++out.iterations;
-      // A linear model promises |f - K du|^2; refuse a step that does not keep part of that.
-      const double promised = out.measures.net2 - (f - K * du).squaredNorm();
-      if (std::isfinite(trial.net2) && trial.net2 <= out.measures.net2 - kSufficientDecrease * std::max(promised, 0.0) &&
-          trial.net2 < out.measures.net2) {
-        accepted = true;
-        out.measures = trial;
-        mu = std::max(mu / 10.0, kMinMu);
-      } else {
-        undo.restore(n, s.joints, s.contact);
-        mu *= 10.0;
-      }
+      double step = 1.0;
+      accepted = line_search(s, free, f, du, undo, cap, step, out);
+      if (!accepted) mu *= 10.0;
+      else if (step == 1.0) mu = std::max(mu / 10.0, kMinMu);
     }
     if (!accepted) {  // the forces of the state kept
       out.measures = compute_forces(s, 0.0, FrictionUpdate::at_equilibrium);

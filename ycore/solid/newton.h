@@ -18,16 +18,18 @@ struct NewtonOutcome {
 };
 
 // From the current positions, at rest, whose forces `start` measured, to equilibrium by Newton
-// iterations on the out-of-balance force: (K + mu M) du = f with K the tangent of the element
-// and joint forces (tangent.h) and M the nodes' masses, mu raised where K + mu M is not
-// positive definite or a step does not reduce |f| (a trust region in the metric of M, which
-// also holds a body that only contact keeps in place), and lowered after each step that does.
-// Each accepted step moves the contacts' friction slip with the displacement and books the
-// contacts' work by the trapezoid over it. The joints' work is booked between equilibria: from
-// `joint_work`, the joints' work when the relaxation began, along the straight path from
-// mechanics.x_start, y_start to the state reached. A phase, like relax: it writes what
-// compute_forces writes. Stops unconverged after 100 force evaluations (or
-// controls.max_steps) or when mu grows beyond any use; the caller then relaxes on from the
+// iterations on the out-of-balance force: (K + K_c + mu M) du = f with K the tangent of the
+// element and joint forces (tangent.h), K_c the penalty of the contact links the step closes
+// (contact_tangent.h: an active set found by solving again) and M the nodes' masses. Each step
+// is cut back along du until the energy falls (its slope -f.du measured at both ends); mu is
+// raised where K + K_c + mu M is not positive definite or no cut lowers the energy (a trust
+// region in the metric of M, which also holds a body that only contact keeps in place), and
+// lowered after each full step. Each accepted step moves the contacts' friction slip with the
+// displacement and books the contacts' work by the trapezoid over it. The joints' work is
+// booked between equilibria: from `joint_work`, the joints' work when the relaxation began,
+// along the straight path from mechanics.x_start, y_start to the state reached. A phase, like
+// relax: it writes what compute_forces writes. Stops unconverged after 100 force evaluations
+// (or controls.max_steps) or when mu grows beyond any use; the caller then relaxes on from the
 // state reached.
 NewtonOutcome newton_equilibrium(State& state, const RelaxationControls& controls, const ForceMeasures& start,
                                  const std::vector<double>& joint_work);

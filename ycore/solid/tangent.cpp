@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "ycore/contact/contact_tangent.h"
 #include "ycore/solid/corotational.h"
 #include "ycore/solid/joint_forces.h"
 
@@ -57,7 +56,7 @@ FreeComponents free_components(const Nodes& n, const Triangles& tri, const std::
 
 Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& tri, const Joints& jt,
                                               const Mechanics& mech, const std::vector<MaterialModel>& materials,
-                                              const Contact* contact, const FreeComponents& free) {
+                                              const FreeComponents& free) {
   std::vector<Eigen::Triplet<double>> entries;
   for (std::size_t e = 0; e < tri.size(); ++e) {
     const MaterialModel& m = materials[tri.material[e]];
@@ -79,7 +78,6 @@ Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& t
                           joint_nodal_forces_at(jt, mech, materials, j, x, y, f);
                         }, entries);
   }
-  if (contact) add_contact_tangent(n, tri, mech, *contact, free.unknown, entries);
   Eigen::SparseMatrix<double> K(Eigen::Index(free.size()), Eigen::Index(free.size()));
   K.setFromTriplets(entries.begin(), entries.end());
   const Eigen::SparseMatrix<double> transpose = K.transpose();

@@ -23,10 +23,9 @@ FreeComponents free_components(const Nodes& nodes, const Triangles& triangles,
 // K = -df/dx of the element and intact-joint forces on the free components, symmetrised, by
 // central differences of each triangle's and joint's own forces in its own coordinates, so
 // that it is the derivative of exactly the forces the kernels compute, on every branch of the
-// joint law; with `contact`, the stiffness of the pairs that carry a force
-// (ycore/contact/contact_tangent.h). The same bits on any number of threads.
+// joint law. The same bits on any number of threads.
 Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& nodes, const Triangles& triangles, const Joints& joints,
                                               const Mechanics& mechanics, const std::vector<MaterialModel>& materials,
-                                              const Contact* contact, const FreeComponents& free);
+                                              const FreeComponents& free);
 
 }  // namespace ydry
