@@ -212,7 +212,8 @@ TEST_CASE("no bytes make the checkpoint reader or the restore crash: they are re
   advance_to(s, deck, 2500.0, coupling_step_limit(s, deck));
   RunRecord record;
   record.max_step_s = coupling_step_limit(s, deck);
-  record.series.rows.assign(1, std::vector<double>(kSeriesColumns.size(), 0.0));
+  record.series.columns = series_columns(s.interface_names);
+  record.series.rows.assign(1, std::vector<double>(record.series.columns.size(), 0.0));
   const std::string bytes = checkpoint_bytes(deck, resolved_deck_text(deck), s, record);
   const auto outcome = [&](const std::string& b) {  // 0 read and restored, 1 refused
     try {

@@ -344,7 +344,7 @@ TEST_CASE("the cracks frame holds a line per broken joint with its opening, and 
   // The same cracks with moisture: 0.3 left of the x = 30 mm crack, 0.1 right of it.
   State wet = two_crack_state();
   wet.moisture.w.resize(
-      group_moisture_nodes(wet.joints, std::vector<std::uint8_t>(wet.triangles.size(), 1), wet.nodes, wet.moisture));
+      group_moisture_nodes(wet.joints, wet.triangles, std::vector<std::uint8_t>(wet.triangles.size(), 1), wet.nodes, wet.moisture));
   for (index_t c = 0; c < wet.nodes.size(); ++c)
     wet.moisture.w[wet.nodes.mnode[c]] = centroid_x0(wet, triangle_of(c)) < 0.03 ? 0.3 : 0.1;
   write_frame(series, wet, 7200.0);

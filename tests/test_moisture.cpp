@@ -241,7 +241,7 @@ TEST_CASE("crack faces exchange the same whether the crack is in the deck or bre
   const std::vector<index_t> old_mnode = s.nodes.mnode;
   const std::vector<double> old_w = s.moisture.w;
   break_joints_along_cracks(s.nodes, precracked.cracks, s.joints);
-  group_moisture_nodes(s.joints, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
+  group_moisture_nodes(s.joints, s.triangles, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
   remap_moisture_nodes(moisture_mesh(s), intact, old_mnode, old_w,
                        s.moisture);
   REQUIRE(expected.moisture.term_kind.size() == 4 * 3);  // three broken joints, four halves each

@@ -94,7 +94,7 @@ TEST_CASE("a vertex fan splits into the sectors between broken joints, and the w
     for (const Segment& g : c.cracks)
       precracks.cracks.push_back({{1e-3 * g.x0, 1e-3 * g.y0}, {1e-3 * g.x1, 1e-3 * g.y1}, c.name});
     break_joints_along_cracks(s.nodes, precracks.cracks, s.joints);
-    group_moisture_nodes(s.joints, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
+    group_moisture_nodes(s.joints, s.triangles, std::vector<std::uint8_t>(s.triangles.size(), 1), s.nodes, s.moisture);
     remap_moisture_nodes(moisture_mesh(s), deck, old_mnode, old_w,
                          s.moisture);
 

@@ -23,13 +23,17 @@ bool faces_up(const Nodes& n, index_t c) {
   return -dx > std::fabs(dy);
 }
 
-// The vertices on an edge that no joint sits on, intact or broken: on the mesh's outer
-// boundary (an edge of one triangle only), facing up or not, or on an interface between
-// materials (an edge two triangles share without a joint). A joint sits on the edge starting
-// at its node 0 (first triangle) and at its node 2 (second triangle).
-std::vector<std::uint8_t> surface_kinds(const Nodes& n, const Joints& joints, index_t nvertices) {
+// The vertices on an edge that no joint of a material sits on, intact or broken: on the mesh's
+// outer boundary (an edge of one triangle only), facing up or not, or on an interface between
+// materials (an edge two triangles share without a joint, or with a bonded interface's). A
+// joint sits on the edge starting at its node 0 (first triangle) and at its node 2 (second
+// triangle).
+std::vector<std::uint8_t> surface_kinds(const State& s, index_t nvertices) {
+  const Nodes& n = s.nodes;
+  const Joints& joints = s.joints;
   std::vector<std::uint8_t> jointed(n.size(), 0);
   for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (is_interface_joint(s, j)) continue;
     jointed[joints.node[4 * j]] = 1;
     jointed[joints.node[4 * j + 2]] = 1;
   }
@@ -107,16 +111,23 @@ std::vector<Crack> find_all_cracks(const State& s) {
 
   std::vector<index_t> parent(nvertices);
   std::iota(parent.begin(), parent.end(), index_t(0));
-  std::vector<std::uint8_t> open(joints.size(), 0);  // broken, or in a crack's process zone
+  // Broken, or in a crack's process zone: a joint of a material (an interface that comes
+  // apart debonds, which is no crack). The vertices of an interface that is coming apart.
+  std::vector<std::uint8_t> open(joints.size(), 0), debonding(nvertices, 0);
   for (std::size_t j = 0; j < joints.size(); ++j) {
-    open[j] = joints.broken[j] || in_process_zone(joints, j);
+    const bool apart = joints.broken[j] || in_process_zone(joints, j);
+    if (is_interface_joint(s, j)) {
+      if (apart) debonding[n.vertex[joints.node[4 * j]]] = debonding[n.vertex[joints.node[4 * j + 1]]] = 1;
+      continue;
+    }
+    open[j] = apart;
     if (open[j]) unite(parent, n.vertex[joints.node[4 * j]], n.vertex[joints.node[4 * j + 1]]);
   }
   std::vector<std::uint8_t> has_broken(nvertices, 0);  // by root
   for (std::size_t j = 0; j < joints.size(); ++j)
-    if (joints.broken[j]) has_broken[find_root(parent, n.vertex[joints.node[4 * j]])] = 1;
+    if (open[j] && joints.broken[j]) has_broken[find_root(parent, n.vertex[joints.node[4 * j]])] = 1;
 
-  const std::vector<std::uint8_t> surface = surface_kinds(n, joints, nvertices);
+  const std::vector<std::uint8_t> surface = surface_kinds(s, nvertices);
   const std::vector<Layer> layers = material_layers(n, s.triangles, s.material_names.size());
   // Cracks numbered in the order of their first open joint.
   std::vector<index_t> crack_of_root(nvertices, kNoIndex);
@@ -144,7 +155,7 @@ std::vector<Crack> find_all_cracks(const State& s) {
       const Mouth candidate{v, material, surface[v], y0, kin.opening[end]};
       if (mouths[k].beaten_by(candidate)) mouths[k] = candidate;
       if (!joints.broken[j]) continue;  // length and penetration count broken joints only
-      if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0)) crack.penetrating = true;
+      if (y0 <= layer.bottom_y0 + 1e-6 * (layer.top_y0 - layer.bottom_y0) || debonding[v]) crack.penetrating = true;
     }
     if (joints.broken[j]) crack.length_m += kin.length;
   }

@@ -12,7 +12,7 @@ struct Crack {
   double x_m = 0;            // current x of the mouth: mean of its corners in the crack's material
   double width_m = 0;        // normal opening at the mouth (the largest of the joints there)
   double length_m = 0;       // sum of the current lengths of its broken joints
-  bool penetrating = false;  // reaches the bottom of its material's layer
+  bool penetrating = false;  // reaches the bottom of its material's layer, or a debonding interface
   bool on_top_surface = false;  // its mouth is on the outer boundary facing up (seen from above)
   std::vector<index_t> joints;  // ascending: its broken and process-zone joints
 };
@@ -32,7 +32,10 @@ constexpr double kProcessZoneDamage = 0.5;
 // highest on the rest of the outer boundary (a layer's end or underside), else the highest on
 // an interface between materials (an edge two triangles share without a joint: a crack opening
 // from a base), else its highest vertex (an internal crack). Penetrating: some vertex within 1e-6 of the layer height of
-// the lowest initial y of the joint's material. O(nodes log nodes + joints), deterministic.
+// the lowest initial y of the joint's material, or on a bonded interface that is debonding
+// there (a broken interface joint, or one in its process zone). A bonded interface's joints
+// are never part of a crack: their breaking is debonding (interface_debonded_lengths).
+// O(nodes log nodes + joints), deterministic.
 std::vector<Crack> find_all_cracks(const State& state);
 
 // The cracks of find_all_cracks wider than width_threshold_m (open, ordered by x_m), and the

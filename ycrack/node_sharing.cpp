@@ -6,13 +6,16 @@
 
 namespace ydry {
 
-void tie_corners(const Joints& joints, Nodes& nodes) {
-  const index_t ncorners = static_cast<index_t>(nodes.size());
-  std::vector<index_t>& parent = nodes.tie_group;
-  parent.resize(ncorners);
+namespace {
+
+// For every corner, the lowest corner connected to it through the intact joints that `ties`
+// accepts (a joint ties corner pairs 4j+0 - 4j+3 and 4j+1 - 4j+2).
+template <class Ties>
+void group_corners(const Joints& joints, Ties&& ties, std::vector<index_t>& parent) {
+  const index_t ncorners = static_cast<index_t>(parent.size());
   std::iota(parent.begin(), parent.end(), index_t(0));
   for (std::size_t j = 0; j < joints.size(); ++j) {
-    if (joints.broken[j]) continue;
+    if (joints.broken[j] || !ties(j)) continue;
     const index_t* n = &joints.node[4 * j];
     unite(parent, n[0], n[3]);
     unite(parent, n[1], n[2]);
@@ -22,10 +25,23 @@ void tie_corners(const Joints& joints, Nodes& nodes) {
   for (index_t c = 0; c < ncorners; ++c) parent[c] = parent[parent[c]];
 }
 
-index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_t>& has_moisture,
-                             Nodes& nodes, MoistureNodes& moisture) {
+}  // namespace
+
+void tie_corners(const Joints& joints, Nodes& nodes) {
+  nodes.tie_group.resize(nodes.size());
+  group_corners(joints, [](std::size_t) { return true; }, nodes.tie_group);
+}
+
+index_t group_moisture_nodes(const Joints& joints, const Triangles& triangles,
+                             const std::vector<std::uint8_t>& has_moisture, Nodes& nodes, MoistureNodes& moisture) {
   tie_corners(joints, nodes);
   const index_t ncorners = static_cast<index_t>(nodes.size());
+  // Moisture nodes never span two materials, which exchange no water (doc/physics.md
+  // "Interface joints"): a bonded interface's joints tie corners for the solid only.
+  std::vector<index_t> group(ncorners);
+  group_corners(joints, [&](std::size_t j) {
+    return triangles.material[triangle_of(joints.node[4 * j])] == triangles.material[triangle_of(joints.node[4 * j + 2])];
+  }, group);
 
   index_t count = 0;
   std::vector<index_t> root_id(ncorners, kNoIndex);
@@ -34,7 +50,7 @@ index_t group_moisture_nodes(const Joints& joints, const std::vector<std::uint8_
       nodes.mnode[c] = kNoIndex;
       continue;
     }
-    const index_t r = nodes.tie_group[c];
+    const index_t r = group[c];
     if (root_id[r] == kNoIndex) root_id[r] = count++;
     nodes.mnode[c] = root_id[r];
   }

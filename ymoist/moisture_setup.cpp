@@ -44,16 +44,19 @@ struct Term {
 // Eqs. 10-12: both faces of every broken joint exchange h_c (w_e - w) with the air in the
 // crack, each over half its initial length at each of its two end corners' moisture nodes. A
 // crack-tip node so gets a half of both faces (Eqs. 15 and 16), each term at the node's own w
-// (doc/physics.md "Cracks and moisture": Eq. 15 as printed takes w_1 there).
+// (doc/physics.md "Cracks and moisture": Eq. 15 as printed takes w_1 there). A face of a
+// material without moisture has none: a debonded interface's other side may be one
+// (doc/physics.md "Interface joints").
 void append_crack_face_terms(const Nodes& nodes, const Joints& joints, const Deck& deck, std::vector<Term>& terms) {
   const double h_c = deck.crack_exchange_coefficient;
   if (h_c <= 0.0) return;
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const index_t* n = &joints.node[4 * j];
-    if (!joints.broken[j] || nodes.mnode[n[0]] == kNoIndex) continue;
+    if (!joints.broken[j]) continue;
     const double half_area = half_edge_area(nodes, deck, n[0], n[1]);  // both faces: the joint's length
     for (int k = 0; k < 4; ++k)  // face 1: nodes 0, 1; face 2: nodes 2, 3
-      terms.push_back({nodes.mnode[n[k]], MoistureTermKind::exchange, half_area, h_c, deck.crack_air_moisture});
+      if (nodes.mnode[n[k]] != kNoIndex)
+        terms.push_back({nodes.mnode[n[k]], MoistureTermKind::exchange, half_area, h_c, deck.crack_air_moisture});
   }
 }
 

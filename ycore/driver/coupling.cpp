@@ -29,7 +29,7 @@ void split_across_broken_joints(State& s, const Deck& deck) {
   if (any_moisture(s)) {
     const std::vector<index_t> old_mnode = s.nodes.mnode;
     const std::vector<double> old_w = s.moisture.w;
-    group_moisture_nodes(s.joints, triangles_with_moisture(s, deck), s.nodes, s.moisture);
+    group_moisture_nodes(s.joints, s.triangles, triangles_with_moisture(s, deck), s.nodes, s.moisture);
     remap_moisture_nodes(moisture_mesh(s), deck, old_mnode, old_w,
                          s.moisture);
   } else {

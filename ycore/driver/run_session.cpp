@@ -49,7 +49,10 @@ RunSession::RunSession(const RunOptions& options)
     check_output_dir(outdir_, options.force);
   progress_.start(deck_.end_time_s, options.quiet, options.progress_every_s);
   state_ = restart_ ? state_from_checkpoint(deck_, checkpoint_) : setup_state(deck_);
-  if (restart_) record_ = checkpoint_record(checkpoint_, deck_, state_);
+  if (restart_)
+    record_ = checkpoint_record(checkpoint_, deck_, state_);
+  else
+    record_.series.columns = series_columns(state_.interface_names);
   progress_.start_time_s = state_.time_s;
   if (restart_)
     resume_output_dir(outdir_, deck_text_);

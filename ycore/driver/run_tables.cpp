@@ -10,6 +10,7 @@
 #include "version.h"
 #include "ycore/solid/energies.h"
 #include "ycore/state/stage_timing.h"
+#include "ycrack/interface_debonding.h"
 #include "ymoist/moisture_step.h"
 
 namespace ydry {
@@ -41,7 +42,7 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
                              moisture ? s.water.initial_kg - total_water_kg(s.moisture) : nan,
                              moisture ? water_balance_error(s.moisture, s.water) : nan};
   if (!deck.mechanics) {
-    row.resize(kSeriesColumns.size(), nan);
+    row.resize(kSeriesColumns.size() + s.interface_names.size(), nan);
     return row;
   }
   const CrackSummary cracks = summarize_cracks(crack_list);
@@ -57,7 +58,9 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
                          right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
                          e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
                          double(s.mechanics.steps)});
-  assert(row.size() == kSeriesColumns.size());  // the values in the columns' order
+  const std::vector<double> debonded = interface_debonded_lengths(s);
+  row.insert(row.end(), debonded.begin(), debonded.end());
+  assert(row.size() == kSeriesColumns.size() + s.interface_names.size());  // the values in the columns' order
   return row;
 }
 
@@ -66,7 +69,7 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   JsonObject j;
   j.text("name", deck.name);
   j.text("version", std::string(YDRY_VERSION) + " (" + YDRY_COMMIT + ")");
-  for (std::size_t c = 0; c < kSeriesColumns.size(); ++c) j.number(kSeriesColumns[c], series.rows.back()[c]);
+  for (std::size_t c = 0; c < series.columns.size(); ++c) j.number(series.columns[c], series.rows.back()[c]);
   j.integer("threads", omp_get_max_threads());
   j.number("wall_s", wall_s);
   for (const auto& [name, seconds] : wall_by_stage(s.wall, wall_s)) j.number("wall_" + name + "_s", seconds);

@@ -15,7 +15,8 @@ namespace ydry {
 // largest y there): right_end_displacement_m is their mean x-displacement.
 std::vector<index_t> right_end_corners(const State& state);
 
-// A row of series.csv, kSeriesColumns order; NaN for what the run does not compute.
+// A row of series.csv, in the order of series_columns(state.interface_names); NaN for what
+// the run does not compute.
 std::vector<double> series_row(const State& state, const Deck& deck, const std::vector<index_t>& right_end,
                                const std::vector<Crack>& cracks);
 

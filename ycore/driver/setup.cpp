@@ -22,7 +22,7 @@ State prepare_state(const Deck& deck) {
   if (!moisture && !deck.mechanics)
     throw InputError(deck.path + ": materials: no material of the mesh has moisture_conductivity, "
                                  "so a moisture-only run has nothing to compute");
-  group_moisture_nodes(s.joints, has_moisture, s.nodes, s.moisture);
+  group_moisture_nodes(s.joints, s.triangles, has_moisture, s.nodes, s.moisture);
   if (moisture)
     init_moisture(moisture_mesh(s), deck, s.moisture,
                   s.moisture_elements, s.water);

@@ -232,6 +232,42 @@ void read_solver(TableReader r, Deck& d) {
   r.finish();
 }
 
+// [interfaces.A_B] (doc/deck.md "[interfaces.A_B]"), read after [contact] and [solver]: a
+// bonded interface's friction angle is also the contact friction of its pair once it has
+// debonded, and its joint penalty defaults to solver.joint_penalty.
+void read_interfaces(TableReader r, Deck& d, const Origin& file) {
+  for (const std::string& name : r.keys()) {
+    TableReader t(r.subtable(name), "interfaces." + name, file);
+    InterfaceDeck f;
+    f.name = name;
+    f.where = t.where_table();
+    f.materials = material_pair(name, d, r);
+    if (f.materials.first == f.materials.second)
+      r.error(name, "names one material twice: an interface joins two different materials");
+    for (const InterfaceDeck& other : d.interfaces)
+      if (other.materials == f.materials) r.error(name, "the same pair of materials as interfaces." + other.name);
+    f.bonded = t.boolean("bonded", false);
+    if (f.bonded) {
+      f.tensile_strength = t.number("tensile_strength", kPositive, std::nullopt);
+      f.cohesion = t.number("cohesion", kNonNegative, std::nullopt);
+      f.friction_angle_deg = t.number("friction_angle", Range{0, 90, false, true}, std::nullopt);
+      f.gf_I = t.number("gf_I", kPositive, std::nullopt);
+      f.gf_II = t.number("gf_II", kPositive, std::nullopt);
+      f.joint_penalty = t.number("joint_penalty", kPositive, d.joint_penalty);
+      if (d.friction_deg.count(f.materials))
+        t.error("friction_angle", "is also the pair's contact friction once debonded: give it here only, not in "
+                                  "contact.friction");
+      d.friction_deg[f.materials] = f.friction_angle_deg;
+    } else {
+      for (const char* key : {"tensile_strength", "cohesion", "friction_angle", "gf_I", "gf_II", "joint_penalty"})
+        if (t.has(key)) t.error(key, "only a bonded interface (bonded = true) has joints");
+    }
+    t.finish();
+    d.interfaces.push_back(f);
+  }
+  r.finish();
+}
+
 }  // namespace
 
 Deck read_deck(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
@@ -260,6 +296,8 @@ Deck read_deck(const std::string& text, const std::string& path, const std::vect
   read_mechanics(TableReader(top.subtable("mechanics"), "mechanics", origin), d, origin);
   read_contact(TableReader(top.subtable("contact"), "contact", origin), d, origin);
   read_solver(TableReader(top.subtable("solver"), "solver", origin), d);
+  // Read only when present, so that a deck without interfaces resolves as it always did.
+  if (top.has("interfaces")) read_interfaces(TableReader(top.subtable("interfaces"), "interfaces", origin), d, origin);
   top.finish();
 
   if (d.output_interval_s > d.end_time_s)

@@ -34,6 +34,20 @@ struct MaterialDeck {
   bool has_moisture() const { return moisture_conductivity.has_value(); }
 };
 
+// An [interfaces.A_B]: the edges shared by triangles of materials A and B (doc/deck.md
+// "[interfaces.A_B]"). Bonded, they carry cohesive joints with these properties; else the two
+// materials meet through contact alone.
+struct InterfaceDeck {
+  std::string name;   // the table's name, "A_B" in the deck's order
+  std::string where;  // "FILE:LINE: interfaces.NAME" for errors found later
+  std::pair<std::string, std::string> materials;  // sorted
+  bool bonded = false;
+  // Only when bonded:
+  double tensile_strength = 0, cohesion = 0, friction_angle_deg = 0;  // Pa, Pa, degrees
+  double gf_I = 0, gf_II = 0;                                         // J/m^2
+  double joint_penalty = 0;  // p / E, E the smaller Young's modulus of its deformable materials
+};
+
 enum class MoistureBcType { flux, fixed, exchange };
 
 struct MoistureBoundaryDeck {
@@ -88,6 +102,7 @@ struct Deck {
   std::string mesh_where;
 
   std::map<std::string, MaterialDeck> materials;  // by name
+  std::vector<InterfaceDeck> interfaces;          // [interfaces.A_B], by name
 
   std::vector<MoistureBoundaryDeck> moisture_boundaries;
   double crack_exchange_coefficient = 0;  // h_c, kg/(m^2 s)

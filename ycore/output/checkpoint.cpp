@@ -186,7 +186,8 @@ RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& 
   if (reactions.compare(0, header.size(), header) != 0)
     throw InputError(c.source + ": field 'record.reactions_csv' does not begin with reactions.csv's header");
   r.reactions_rows = reactions.substr(header.size());
-  const std::size_t columns = kSeriesColumns.size();
+  r.series.columns = series_columns(s.interface_names);
+  const std::size_t columns = r.series.columns.size();
   if (rows.size() % columns != 0)
     throw InputError(c.source + ": field 'record.series' does not hold whole rows of series.csv");
   for (std::size_t k = 0; k < rows.size(); k += columns)

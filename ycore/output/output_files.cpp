@@ -28,6 +28,12 @@ const std::vector<std::string> kSeriesColumns = {
     "elastic_energy_J", "joint_work_J", "fracture_energy_J", "contact_work_J", "external_work_J",
     "gravity_work_J", "mechanical_steps"};
 
+std::vector<std::string> series_columns(const std::vector<std::string>& interface_names) {
+  std::vector<std::string> columns = kSeriesColumns;
+  for (const std::string& name : interface_names) columns.push_back("debonded_length_" + name);
+  return columns;
+}
+
 std::string format_double(double v) {
   if (std::isnan(v)) return "nan";
   char buf[32];
@@ -100,7 +106,7 @@ void resume_output_dir(const std::string& outdir, const std::string& deck_text) 
 
 void write_series_csv(const std::string& path, const Series& series) {
   std::ostringstream out;
-  for (std::size_t c = 0; c < kSeriesColumns.size(); ++c) out << (c ? "," : "") << kSeriesColumns[c];
+  for (std::size_t c = 0; c < series.columns.size(); ++c) out << (c ? "," : "") << series.columns[c];
   out << "\n";
   for (const auto& row : series.rows) {
     for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << format_double(row[c]);

@@ -33,11 +33,15 @@ void check_resume_dir(const std::string& outdir, const std::string& deck_text);
 // everything else for the restart.
 void resume_output_dir(const std::string& outdir, const std::string& deck_text);
 
-// The columns of series.csv, in order (doc/outputs.md "Files of a run"); summary.json repeats the last row.
+// The columns of series.csv that every run has, in order (doc/outputs.md "Files of a run");
+// summary.json repeats the last row.
 extern const std::vector<std::string> kSeriesColumns;
+// A run's columns: kSeriesColumns, then debonded_length_NAME for each bonded interface NAME.
+std::vector<std::string> series_columns(const std::vector<std::string>& interface_names);
 
 struct Series {
-  std::vector<std::vector<double>> rows;  // one per output time, kSeriesColumns order
+  std::vector<std::string> columns;       // series_columns of the run
+  std::vector<std::vector<double>> rows;  // one per output time, in the columns' order
 };
 void write_series_csv(const std::string& path, const Series& series);
 

@@ -86,8 +86,9 @@ vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
 }
 
 // One line per broken joint between the midpoints of its node pairs at the two ends, with
-// the mean opening and slip of the ends, the mean moisture of each face's two corners and, in
-// a run with mechanics, the joint's strength factor.
+// the mean opening and slip of the ends, the mean moisture of each face's two corners, in
+// a run with mechanics the joint's strength factor and, in a run with bonded interfaces, its
+// kind (0 a material's joint, 1 an interface's).
 vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   const Nodes& n = s.nodes;
   vtkIdType nb = 0;
@@ -103,6 +104,8 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   auto face2 = named_array("moisture_face2", 1, nb);  // nodes 2, 3: the second's
   const bool mechanics = s.joints.strength_factor.size() == s.joints.size();
   auto factor = named_array("strength_factor", 1, mechanics ? nb : 0);
+  const bool interfaces = !s.interface_names.empty();
+  auto kind = named_array("joint_kind", 1, interfaces ? nb : 0);
   vtkIdType line = 0;
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     if (!s.joints.broken[j]) continue;
@@ -119,6 +122,7 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
     face1->SetValue(line, 0.5 * (node_moisture(s, jn[0]) + node_moisture(s, jn[1])));
     face2->SetValue(line, 0.5 * (node_moisture(s, jn[2]) + node_moisture(s, jn[3])));
     if (mechanics) factor->SetValue(line, s.joints.strength_factor[j]);
+    if (interfaces) kind->SetValue(line, is_interface_joint(s, j) ? 1.0 : 0.0);
     ++line;
   }
   vtkNew<vtkUnstructuredGrid> grid;
@@ -129,6 +133,7 @@ vtkNew<vtkUnstructuredGrid> crack_grid(const State& s) {
   grid->GetCellData()->AddArray(face1);
   grid->GetCellData()->AddArray(face2);
   if (mechanics) grid->GetCellData()->AddArray(factor);
+  if (interfaces) grid->GetCellData()->AddArray(kind);
   return grid;
 }
 

@@ -62,6 +62,33 @@ MaterialModel material_model(const MaterialDeck& md, const Deck& deck) {
   return m;
 }
 
+// A bonded interface's joint properties (doc/physics.md "Interface joints"): the joint law
+// of a breakable material's joints with the interface's strengths and fracture energies, and
+// the penalty joint_penalty x E of the softer of its deformable materials (against a rigid one,
+// the other's). Between two rigid materials its joints carry nothing, as a rigid material's.
+MaterialModel interface_model(const InterfaceDeck& f, const MaterialModel& a, const MaterialModel& b) {
+  MaterialModel m;
+  m.mechanical = a.mechanical || b.mechanical;
+  if (!m.mechanical) return m;
+  const double young = !a.mechanical ? b.young : !b.mechanical ? a.young : std::min(a.young, b.young);
+  m.penalty = f.joint_penalty * young;
+  m.tensile_strength = f.tensile_strength;
+  m.cohesion = f.cohesion;
+  m.tan_friction = std::tan(f.friction_angle_deg * M_PI / 180.0);
+  m.gf_I = f.gf_I;
+  m.gf_II = f.gf_II;
+  return m;
+}
+
+// Where the deck gives the properties of joints with properties `id` (Joints::material).
+const std::string& joint_properties_where(const State& s, const Deck& deck, std::size_t id) {
+  const std::size_t nm = s.material_names.size();
+  if (id < nm) return deck.materials.at(s.material_names[id]).where;
+  const std::string& name = s.interface_names[id - nm];
+  return std::find_if(deck.interfaces.begin(), deck.interfaces.end(),
+                      [&](const InterfaceDeck& f) { return f.name == name; })->where;
+}
+
 void set_reference_geometry(State& s) {
   Nodes& n = s.nodes;
   Triangles& t = s.triangles;
@@ -90,7 +117,6 @@ void set_joint_data(State& s, const Deck& deck) {
   Joints& j = s.joints;
   const Nodes& n = s.nodes;
   const std::size_t nj = j.size();
-  j.material.resize(nj);
   j.length0.resize(nj);
   j.damage.assign(3 * nj, 0.0);
   j.force.assign(8 * nj, 0.0);
@@ -99,7 +125,6 @@ void set_joint_data(State& s, const Deck& deck) {
   j.mechanical_runs.clear();
   for (std::size_t k = 0; k < nj; ++k) {
     const index_t a = j.node[4 * k], b = j.node[4 * k + 1];
-    j.material[k] = s.triangles.material[triangle_of(a)];
     j.length0[k] = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
     if (!s.materials[j.material[k]].mechanical) continue;  // carries nothing, ever
     if (j.mechanical_runs.empty() || j.mechanical_runs.back() != k)
@@ -125,10 +150,11 @@ void set_joint_data(State& s, const Deck& deck) {
     if (!m.mechanical || !m.breakable || largest[id] == 0.0) continue;
     const double prepeak = 2.0 / 3.0 * m.tensile_strength * 2.0 * largest[id] * m.tensile_strength / m.penalty;
     if (m.gf_I <= prepeak)
-      throw InputError(deck.materials.at(s.material_names[id]).where +
+      throw InputError(joint_properties_where(s, deck, id) +
                        ".gf_I: smaller than the joint's pre-peak work " + std::to_string(prepeak) +
                        " J/m^2 at this element size" + (m.strength_heterogeneity > 0.0 ? " and strongest joint" : "") +
-                       "; raise solver.joint_penalty or refine the mesh");
+                       "; raise " + (id < s.material_names.size() ? "solver.joint_penalty" : "its joint_penalty") +
+                       " or refine the mesh");
   }
 }
 
@@ -213,9 +239,16 @@ double roundoff_net2(const State& s) {
 void init_mechanics(State& s, const Deck& deck) {
   std::vector<std::uint8_t> used(s.material_names.size(), 0);
   for (const std::uint16_t m : s.triangles.material) used[m] = 1;
-  s.materials.assign(s.material_names.size(), MaterialModel{});
-  for (std::size_t id = 0; id < s.material_names.size(); ++id)
+  const std::size_t nm = s.material_names.size();
+  s.materials.assign(nm, MaterialModel{});
+  for (std::size_t id = 0; id < nm; ++id)
     if (used[id]) s.materials[id] = material_model(deck.materials.at(s.material_names[id]), deck);
+  const auto id_of = [&](const std::string& name) {
+    return std::size_t(std::find(s.material_names.begin(), s.material_names.end(), name) - s.material_names.begin());
+  };
+  for (const InterfaceDeck& f : deck.interfaces)  // in the order of State::interface_names
+    if (f.bonded)
+      s.materials.push_back(interface_model(f, s.materials[id_of(f.materials.first)], s.materials[id_of(f.materials.second)]));
 
   Mechanics& mech = s.mechanics;
   mech.thickness_m = deck.thickness_m;
@@ -229,8 +262,8 @@ void init_mechanics(State& s, const Deck& deck) {
   set_constraints(s, deck);
   init_contact(s.nodes, s.joints, s.material_names, deck, s.contact);
   s.ownership = partition_for_threads(s.triangles, s.joints, s.materials, kOwnershipSlots);
-  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s.triangles, mech, s.contact, s.materials, s.nodes);
-  mech.step_s = stable_mechanics_step(s.nodes, s.triangles, mech, s.contact, s.materials, deck.mechanics_safety);
+  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s.triangles, s.joints, mech, s.contact, s.materials, s.nodes);
+  mech.step_s = stable_mechanics_step(s.nodes, s.triangles, s.joints, mech, s.contact, s.materials, deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
   const auto [x_min, x_max] = std::minmax_element(s.nodes.x0.begin(), s.nodes.x0.end());
   const auto [y_min, y_max] = std::minmax_element(s.nodes.y0.begin(), s.nodes.y0.end());

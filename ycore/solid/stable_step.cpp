@@ -7,8 +7,8 @@
 
 namespace ydry {
 
-std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, const Mechanics& mech,
-                                         const Contact& c, const std::vector<MaterialModel>& materials) {
+std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, const Joints& jt,
+                                         const Mechanics& mech, const Contact& c, const std::vector<MaterialModel>& materials) {
   const double thickness = mech.thickness_m;
   const double contact = contact_stiffness_bound(mech, c);  // any corner may come to lie on a crack face
   std::vector<double> bound(n.size(), 0.0);
@@ -26,25 +26,28 @@ std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, c
       if (n.constraint[i + a] == (kFixX | kFixY)) continue;
       // |K_ab| <= t (lambda + 2 mu) l_a l_b / (4 A0) for a CST; two components per node.
       double k = thickness * (m.lambda + 2.0 * m.mu) * edge[a] * perimeter / (2.0 * tri.area0[e]);
-      for (int slot = 0; slot < 2; ++slot)
-        if (n.joint_slot[2 * (i + a) + slot] != kNoIndex) k += m.penalty * thickness;  // row sum ~ p t
+      for (int slot = 0; slot < 2; ++slot) {  // row sum ~ p t, p the joint's (an interface's may differ)
+        const index_t js = n.joint_slot[2 * (i + a) + slot];
+        if (js != kNoIndex) k += materials[jt.material[js / 4]].penalty * thickness;
+      }
       bound[i + a] = k + contact;
     }
   }
   return bound;
 }
 
-double stable_mechanics_step(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Contact& c,
+double stable_mechanics_step(const Nodes& n, const Triangles& tri, const Joints& jt, const Mechanics& mech,
+                             const Contact& c,
                              const std::vector<MaterialModel>& materials, double safety) {
-  const std::vector<double> bound = node_stiffness_bound(n, tri, mech, c, materials);
+  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, materials);
   double omega2_max = 0.0;
   for (std::size_t i = 0; i < bound.size(); ++i) omega2_max = std::max(omega2_max, bound[i] / n.m[i]);
   return omega2_max > 0.0 ? safety * 2.0 / std::sqrt(omega2_max) : 1.0;
 }
 
-void scale_node_masses_to_common_step(const Triangles& tri, const Mechanics& mech, const Contact& c,
+void scale_node_masses_to_common_step(const Triangles& tri, const Joints& jt, const Mechanics& mech, const Contact& c,
                                       const std::vector<MaterialModel>& materials, Nodes& n) {
-  const std::vector<double> bound = node_stiffness_bound(n, tri, mech, c, materials);
+  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, materials);
   std::vector<double> omega2;
   for (std::size_t i = 0; i < bound.size(); ++i)
     if (bound[i] > 0.0) omega2.push_back(bound[i] / n.m[i]);

@@ -1,6 +1,8 @@
 #include "ycore/state/build_state.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 
 #include "ycore/input/input_error.h"
@@ -69,6 +71,23 @@ State build_state(const MeshInput& mesh, const Deck& deck) {
     s.triangles.material[t] = material_id.at(mesh.tri_material[t]);
   }
 
+  // The joint properties of an edge between materials a and b: the material's when a == b,
+  // a bonded interface's (State::materials past the materials), or none (contact only).
+  const std::size_t nm = s.material_names.size();
+  std::map<std::pair<std::uint16_t, std::uint16_t>, std::uint16_t> bonded;
+  for (const InterfaceDeck& f : deck.interfaces) {
+    if (!f.bonded) continue;
+    const std::uint16_t a = material_id.at(f.materials.first), b = material_id.at(f.materials.second);
+    bonded[std::minmax(a, b)] = std::uint16_t(nm + s.interface_names.size());
+    s.interface_names.push_back(f.name);
+  }
+  const auto joint_properties = [&](std::uint16_t a, std::uint16_t b) -> std::optional<std::uint16_t> {
+    if (a == b) return a;
+    const auto it = bonded.find(std::minmax(a, b));
+    if (it == bonded.end()) return std::nullopt;
+    return it->second;
+  };
+
   const auto sides = edge_sides(mesh);
   // Joints in triangle order, so that their numbering does not depend on hashing.
   for (index_t t = 0; t < nt; ++t)
@@ -80,7 +99,9 @@ State build_state(const MeshInput& mesh, const Deck& deck) {
                          std::to_string(t) + " is shared by " + std::to_string(es.size()) + " triangles");
       if (es.size() != 2 || es[0].triangle != t) continue;  // boundary edge, or seen from the other side
       const EdgeSide other = es[1];
-      if (s.triangles.material[other.triangle] != s.triangles.material[t]) continue;
+      const auto properties = joint_properties(s.triangles.material[t], s.triangles.material[other.triangle]);
+      if (!properties) continue;  // two materials that meet through contact alone
+      s.joints.material.push_back(*properties);
       s.joints.node.insert(s.joints.node.end(),
                            {corner_node(t, e), corner_node(t, (e + 1) % 3),
                             corner_node(other.triangle, other.edge),

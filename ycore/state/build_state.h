@@ -15,8 +15,9 @@ namespace ydry {
 MeshInput load_mesh(const Deck& deck);
 
 // Explodes the mesh: 3 nodes per triangle, joints on every interior edge inside a material
-// (none between two materials: those are separate bodies), named boundary edges as node pairs.
-// Moisture nodes are left to ycrack and ymoist.
+// and on every edge of a bonded interface (deck.interfaces; none between two other materials:
+// those are separate bodies), each with its properties' index (Joints::material), named
+// boundary edges as node pairs. Moisture nodes are left to ycrack and ymoist.
 State build_state(const MeshInput& mesh, const Deck& deck);
 
 // The node pairs of a named boundary (State::boundary_edges); InputError at `where` if the

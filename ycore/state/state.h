@@ -3,8 +3,8 @@
 //
 // The mechanical mesh is exploded, as in Y-Code: every triangle owns its three nodes, and
 // node 3t+a is corner a (counter-clockwise) of triangle t, so a triangle's nodes are implied
-// by its index. Coincident corners of neighbouring triangles of one material are tied by a
-// 4-node joint on their common edge. A moisture node is a connected set of coincident
+// by its index. Coincident corners of neighbouring triangles of one material, or of two
+// materials across a bonded interface, are tied by a 4-node joint on their common edge. A moisture node is a connected set of coincident
 // corners under intact joints (ycrack/node_sharing.h builds them).
 #pragma once
 
@@ -74,12 +74,17 @@ struct Triangles {                // [triangles] each
   std::size_t size() const { return area0.size(); }
 };
 
-struct Joints {                   // one per interior edge inside a material
+// One per interior edge inside a material, and per edge of a bonded interface between two
+// (doc/physics.md "Interface joints").
+struct Joints {
   // constant
   // [4 * joints]: edge a-b of the first triangle (CCW), then b'-a' of the second, so that
   // node 4j+0 meets 4j+3 and 4j+1 meets 4j+2.
   std::vector<index_t> node;
-  std::vector<std::uint16_t> material;  // [joints] the material of both its triangles
+  // [joints] its properties, an index into State::materials: the material of both its
+  // triangles, or, from State::material_names.size() on, a bonded interface's
+  // (State::interface_names; is_interface_joint).
+  std::vector<std::uint16_t> material;
   std::vector<double> length0;          // [joints] initial length, m
   std::vector<double> strength_factor;  // [joints] multiplies the material's tensile strength
                                         // and cohesion (strength_heterogeneity; 1 without)
@@ -242,8 +247,11 @@ struct State {
   std::vector<MechanicsBoundary> mechanics_boundaries;
   // constant
   Ownership ownership;                                     // the threads' ranges (ownership.h)
-  std::vector<MaterialModel> materials;                    // by material id
+  // By material id, then by interface: entry material_names.size() + i holds the joint
+  // properties of the bonded interface interface_names[i] (only its joint constants are set).
+  std::vector<MaterialModel> materials;
   std::vector<std::string> material_names;                 // material id -> deck name
+  std::vector<std::string> interface_names;                // bonded [interfaces.NAME] of the deck, in its order
   std::map<std::string, std::vector<index_t>> boundary_edges;  // name -> node pairs (one triangle's)
   // history
   double time_s = 0;
@@ -251,5 +259,8 @@ struct State {
   // this process's wall time by stage: not part of the physics, not checkpointed
   StageSeconds wall;
 };
+
+// Whether joint j ties two materials (a bonded interface's) rather than the triangles of one.
+inline bool is_interface_joint(const State& s, std::size_t j) { return s.joints.material[j] >= s.material_names.size(); }
 
 }  // namespace ydry

@@ -1,0 +1,267 @@
+// Bonded interfaces between two materials (doc/physics.md "Interface joints", doc/deck.md
+// "[interfaces.A_B]"): the deck's keys and errors, which edges carry joints, the moisture
+// nodes, and a bonded cracking run on 1 and 2 threads.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "tests/test_support.h"
+#include "ycore/driver/coupling.h"
+#include "ycore/driver/setup.h"
+#include "ycore/input/input_error.h"
+#include "ycore/state/build_state.h"
+#include "ycrack/crack_statistics.h"
+#include "ycrack/interface_debonding.h"
+
+using namespace ydry;
+using namespace ydry_test;
+
+namespace {
+
+// Soil over a base on tests/data/two_materials.msh (the curve "interface" between them), both
+// deformable and wet, with mechanics; the interface as the overrides make it.
+Deck soil_on_base(TempDir& dir, const std::vector<std::string>& sets = {}) {
+  write_text(dir.file("deck.toml"), R"(
+[run]
+name = "soil_on_base"
+end_time = 1.0
+output_interval = 1.0
+[mesh]
+file = ")" YDRY_SOURCE_DIR R"(/tests/data/two_materials.msh"
+[materials.soil]
+density = 1300.0
+young = 1.0e6
+poisson = 0.3
+tensile_strength = 1.0e4
+cohesion = 1.0e4
+friction_angle = 30.0
+gf_I = 10.0
+gf_II = 10.0
+shrinkage_coefficient = 0.1
+moisture_conductivity = 2.0e-6
+initial_moisture = 0.3
+[materials.base]
+density = 2700.0
+young = 4.0e6
+poisson = 0.3
+breakable = false
+shrinkage_coefficient = 0.0
+moisture_conductivity = 0.0
+initial_moisture = 0.1
+)");
+  return load_deck(dir.file("deck.toml"), sets);
+}
+
+const std::vector<std::string> kBonded = {
+    "interfaces.base_soil={bonded=true, tensile_strength=2.0e3, cohesion=3.0e3, friction_angle=25.0, "
+    "gf_I=1.0, gf_II=2.0}"};
+
+// The mesh edges shared by two triangles, as sorted vertex pairs, by the sorted pair of their
+// materials' names.
+std::map<std::pair<std::string, std::string>, std::set<std::pair<index_t, index_t>>> shared_edges(const MeshInput& mesh) {
+  std::map<std::pair<index_t, index_t>, std::vector<index_t>> sides;
+  for (index_t t = 0; t < mesh.triangle_count(); ++t)
+    for (int e = 0; e < 3; ++e)
+      sides[std::minmax(mesh.tri[3 * t + e], mesh.tri[3 * t + (e + 1) % 3])].push_back(t);
+  std::map<std::pair<std::string, std::string>, std::set<std::pair<index_t, index_t>>> edges;
+  for (const auto& [edge, triangles] : sides)
+    if (triangles.size() == 2)
+      edges[std::minmax(mesh.tri_material[triangles[0]], mesh.tri_material[triangles[1]])].insert(edge);
+  return edges;
+}
+
+std::pair<index_t, index_t> joint_edge(const State& s, std::size_t j) {
+  return std::minmax(s.nodes.vertex[s.joints.node[4 * j]], s.nodes.vertex[s.joints.node[4 * j + 1]]);
+}
+
+}  // namespace
+
+TEST_CASE("an [interfaces.A_B] table is read in either order, with its defaults", "[interfaces]") {
+  TempDir dir;
+  const Deck plain = soil_on_base(dir);
+  CHECK(plain.interfaces.empty());
+  CHECK(plain.resolved.get("interfaces") == nullptr);  // a deck without them resolves as before
+
+  const Deck deck = soil_on_base(dir, kBonded);
+  REQUIRE(deck.interfaces.size() == 1);
+  const InterfaceDeck& f = deck.interfaces[0];
+  CHECK(f.name == "base_soil");
+  CHECK(f.materials == std::make_pair(std::string("base"), std::string("soil")));
+  CHECK(f.bonded);
+  CHECK(f.tensile_strength == 2.0e3);
+  CHECK(f.cohesion == 3.0e3);
+  CHECK(f.gf_I == 1.0);
+  CHECK(f.gf_II == 2.0);
+  CHECK(f.joint_penalty == deck.joint_penalty);  // solver.joint_penalty, as a material's joints
+  // Its friction angle is the pair's contact friction once debonded.
+  CHECK(deck.friction_deg.at({"base", "soil"}) == 25.0);
+
+  const Deck contact_only = soil_on_base(dir, {"interfaces.soil_base.bonded=false"});
+  REQUIRE(contact_only.interfaces.size() == 1);
+  CHECK_FALSE(contact_only.interfaces[0].bonded);
+  CHECK(contact_only.friction_deg.empty());
+}
+
+TEST_CASE("a wrong [interfaces] table is an InputError that names it", "[interfaces]") {
+  TempDir dir;
+  const auto error = [&](const std::vector<std::string>& sets) {
+    try {
+      soil_on_base(dir, sets);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error({"interfaces.soil_rock.bonded=true"}),
+             Catch::Contains("interfaces.soil_rock") && Catch::Contains("two materials of the deck"));
+  CHECK_THAT(error({"interfaces.soilbase.bonded=false"}), Catch::Contains("interfaces.soilbase"));
+  CHECK_THAT(error({"interfaces.soil_soil.bonded=false"}), Catch::Contains("two different materials"));
+  CHECK_THAT(error({"interfaces.soil_base.glue=1.0"}), Catch::Contains("interfaces.soil_base.glue: unknown key"));
+  CHECK_THAT(error({"interfaces.soil_base={bonded=true, cohesion=3.0e3, friction_angle=25.0, gf_I=1.0, gf_II=2.0}"}),
+             Catch::Contains("interfaces.soil_base.tensile_strength: required key is missing"));
+  CHECK_THAT(error({"interfaces.soil_base={bonded=false, cohesion=3.0e3}"}),
+             Catch::Contains("interfaces.soil_base.cohesion: only a bonded interface"));
+  CHECK_THAT(error({"interfaces.soil_base.bonded=false", "interfaces.base_soil.bonded=false"}),
+             Catch::Contains("the same pair of materials"));
+  CHECK_THAT(error({kBonded[0], "contact.friction={soil_base=20.0}"}), Catch::Contains("contact.friction"));
+  CHECK_THAT(error({"interfaces.base_soil={bonded=true, tensile_strength=-1.0, cohesion=3.0e3, friction_angle=25.0, "
+                    "gf_I=1.0, gf_II=2.0}"}),
+             Catch::Contains("interfaces.base_soil.tensile_strength: value -1 out of range"));
+  CHECK_THAT(error({"interfaces=3"}), Catch::Contains("interfaces: expected a table"));
+}
+
+TEST_CASE("without a bonded interface the joints are the edges inside one material; with one, also its edges",
+          "[interfaces]") {
+  TempDir dir;
+  const Deck plain = soil_on_base(dir), bonded = soil_on_base(dir, kBonded),
+             unbonded = soil_on_base(dir, {"interfaces.soil_base.bonded=false"});
+  const MeshInput mesh = load_mesh(plain);
+  const auto edges = shared_edges(mesh);
+  const std::size_t inside = edges.at({"base", "base"}).size() + edges.at({"soil", "soil"}).size();
+  const std::set<std::pair<index_t, index_t>>& interface = edges.at({"base", "soil"});
+  REQUIRE(interface.size() >= 5);  // the 2 m curve "interface" at h = 0.4
+
+  const State s0 = build_state(mesh, plain), s1 = build_state(mesh, bonded), s2 = build_state(mesh, unbonded);
+  CHECK(s0.joints.size() == inside);
+  CHECK(s2.joints.node == s0.joints.node);  // bonded = false: contact only, the joints of no interface
+  CHECK(s2.joints.material == s0.joints.material);
+  REQUIRE(s1.joints.size() == inside + interface.size());
+  CHECK(s1.interface_names == std::vector<std::string>{"base_soil"});
+  std::set<std::pair<index_t, index_t>> bonded_edges;
+  for (std::size_t j = 0; j < s1.joints.size(); ++j) {
+    const std::uint16_t m0 = s1.triangles.material[triangle_of(s1.joints.node[4 * j])];
+    const std::uint16_t m1 = s1.triangles.material[triangle_of(s1.joints.node[4 * j + 2])];
+    CHECK(is_interface_joint(s1, j) == (m0 != m1));
+    if (!is_interface_joint(s1, j)) {
+      CHECK(s1.joints.material[j] == m0);
+      continue;
+    }
+    CHECK(s1.joints.material[j] == s1.material_names.size());  // the first interface's properties
+    bonded_edges.insert(joint_edge(s1, j));
+  }
+  CHECK(bonded_edges == interface);
+  // The joints inside the materials are those of the deck without the interface, in order.
+  std::vector<index_t> inside_nodes;
+  for (std::size_t j = 0; j < s1.joints.size(); ++j)
+    if (!is_interface_joint(s1, j)) inside_nodes.insert(inside_nodes.end(), &s1.joints.node[4 * j], &s1.joints.node[4 * j + 4]);
+  CHECK(inside_nodes == s0.joints.node);
+}
+
+TEST_CASE("a bonded interface's joints take its properties; they tie its corners for the solid, not for the water",
+          "[interfaces]") {
+  TempDir dir;
+  const State plain = prepare_state(soil_on_base(dir));
+  const State bonded = prepare_state(soil_on_base(dir, kBonded));
+  const std::size_t nm = bonded.material_names.size();
+  REQUIRE(bonded.materials.size() == nm + 1);
+  const MaterialModel& f = bonded.materials[nm];
+  CHECK(f.mechanical);
+  CHECK(f.tensile_strength == 2.0e3);
+  CHECK(f.cohesion == 3.0e3);
+  CHECK(f.tan_friction == Approx(std::tan(25.0 * M_PI / 180.0)).epsilon(1e-15));
+  CHECK(f.penalty == 1000.0 * 1.0e6);  // solver.joint_penalty x the softer E (the soil's)
+  // Every corner of an interface joint is tied to its partner across the interface ...
+  for (std::size_t j = 0; j < bonded.joints.size(); ++j) {
+    if (!is_interface_joint(bonded, j)) continue;
+    const index_t* n = &bonded.joints.node[4 * j];
+    CHECK(bonded.nodes.tie_group[n[0]] == bonded.nodes.tie_group[n[3]]);
+    CHECK(bonded.nodes.tie_group[n[1]] == bonded.nodes.tie_group[n[2]]);
+  }
+  // ... but the moisture nodes are those of the unbonded materials: no water crosses, even
+  // into a base whose conductivity is 0.
+  CHECK(bonded.nodes.mnode == plain.nodes.mnode);
+  CHECK(bonded.moisture.w == plain.moisture.w);
+  CHECK(bonded.moisture.dry_mass == plain.moisture.dry_mass);
+}
+
+TEST_CASE("a layer bonded to its rigid base debonds bitwise the same on 1 and 2 threads", "[interfaces][threads]") {
+  std::vector<std::string> sets = kCrackingLayer;
+  sets.insert(sets.end(), {"contact.friction={soil_soil=20.0}",
+                           "interfaces.soil_base={bonded=true, tensile_strength=300.0, cohesion=300.0, "
+                           "friction_angle=20.0, gf_I=1.0e-4, gf_II=1.0e-4}"});
+  const Deck deck = load_deck(kPeronDeck, sets);
+  Snapshot state[2];
+  std::vector<double> debonded[2];
+  State last;
+  on_1_and_2_threads([&](int threads) {
+    State s = setup_state(deck);
+    advance_to(s, deck, deck.end_time_s, coupling_step_limit(s, deck));
+    state[threads - 1] = state_snapshot(s);
+    debonded[threads - 1] = interface_debonded_lengths(s);
+    last = std::move(s);
+  });
+  // It means something: the interface came apart somewhere, and its base stayed where it was.
+  REQUIRE(debonded[0].size() == 1);
+  CHECK(debonded[0][0] > 0.0);
+  CHECK(same_bits(debonded[0], debonded[1]));
+  const std::uint16_t base = std::uint16_t(
+      std::find(last.material_names.begin(), last.material_names.end(), "base") - last.material_names.begin());
+  for (std::size_t i = 0; i < last.nodes.size(); ++i)
+    if (last.triangles.material[triangle_of(index_t(i))] == base) {
+      CHECK(last.nodes.x[i] == last.nodes.x0[i]);
+      CHECK(last.nodes.y[i] == last.nodes.y0[i]);
+    }
+  for (const auto& [name, values] : state[0]) {
+    INFO(name);
+    CHECK(same_bits(values, state[1][name]));
+  }
+}
+
+TEST_CASE("a crack that reaches a debonded interface penetrates; the debonding itself is no crack", "[interfaces]") {
+  TempDir dir;
+  State s = prepare_state(soil_on_base(dir, kBonded));
+  const std::uint16_t base = std::uint16_t(
+      std::find(s.material_names.begin(), s.material_names.end(), "base") - s.material_names.begin());
+  const double base_bottom = *std::min_element(s.nodes.y0.begin(), s.nodes.y0.end());
+  // A joint of the base (0 <= y <= 0.5) from the interface y = 0.5 down into the base, short of
+  // its bottom; and an interface joint at its top end.
+  std::size_t crack = s.joints.size(), interface = s.joints.size();
+  for (std::size_t j = 0; j < s.joints.size() && interface == s.joints.size(); ++j) {
+    const index_t* n = &s.joints.node[4 * j];
+    if (s.joints.material[j] != base || s.nodes.y0[n[0]] <= base_bottom + 1e-9 || s.nodes.y0[n[1]] <= base_bottom + 1e-9)
+      continue;
+    const index_t top = s.nodes.y0[n[0]] > s.nodes.y0[n[1]] ? n[0] : n[1];
+    if (std::fabs(s.nodes.y0[top] - 0.5) > 1e-9) continue;
+    for (std::size_t k = 0; k < s.joints.size(); ++k) {
+      const index_t* m = &s.joints.node[4 * k];
+      if (is_interface_joint(s, k) && (s.nodes.vertex[m[0]] == s.nodes.vertex[top] || s.nodes.vertex[m[1]] == s.nodes.vertex[top])) {
+        crack = j, interface = k;
+        break;
+      }
+    }
+  }
+  REQUIRE(interface < s.joints.size());
+  s.joints.broken[crack] = 1;
+  std::vector<Crack> cracks = find_all_cracks(s);
+  REQUIRE(cracks.size() == 1);
+  CHECK_FALSE(cracks[0].penetrating);  // short of the base's bottom, at a bonded interface
+  s.joints.broken[interface] = 1;
+  cracks = find_all_cracks(s);
+  REQUIRE(cracks.size() == 1);  // the broken interface joint is no crack of its own
+  CHECK(cracks[0].joints == std::vector<index_t>{index_t(crack)});
+  CHECK(cracks[0].penetrating);
+  CHECK(interface_debonded_lengths(s) == std::vector<double>{s.joints.length0[interface]});
+}
