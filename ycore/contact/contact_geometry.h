@@ -50,10 +50,9 @@ inline double end_weight(double along) {
 }
 
 // Faces the edge, as contact sees it: the corner projects onto the edge (or its end's taper)
-// and lies less than
-// `reach` outside it (0: inside, in contact) and less than half the edge's length deep
-// (deeper, it is a corner of the far side of a thin body), and one of its own surface edges
-// faces the edge within 80 degrees of head-on. (A corner of a flat surface that a block's
+// and lies less than `reach` outside it (0: inside, in contact) and less than half the edge's
+// length deep (deeper, it is a corner of the far side of a thin body), and one of its own
+// surface edges faces the edge within 80 degrees of head-on. (A corner of a flat surface that a block's
 // corner slides over lies, by the penalty's give, just inside the block's side too; its own
 // surface is at right angles to that side, and the block's bottom, which it does face,
 // carries the contact.)

@@ -1,5 +1,7 @@
-// The contacts linearised for the Newton equilibrium solver: one link a corner, active or
-// not, whose stiffness and force enter the solver's piecewise-linear model of the step
+// The contacts linearised for the Newton equilibrium solver: a link for each pair that carries
+// a corner's contact (two within the taper of a junction), or for the edge a free corner lies
+// nearest, active or not, whose stiffness and force enter the solver's piecewise-linear model
+// of the step
 // (doc/solver.md "Quasi-static equilibrium"; doc/physics.md "Contact and friction").
 #pragma once
 
