@@ -63,11 +63,20 @@ CellGrid bin_surface_nodes(const Nodes& n, const Contact& c) {
   return g;
 }
 
-// Whether corner i may touch the edge starting at corner e at all.
-bool may_touch(const Nodes& n, index_t i, index_t e) {
+// Whether corner i may touch the edge starting at corner e at all. Not where it is tied to
+// one of the edge's ends, nor where an intact joint's line joins it to one: it lies on that
+// joint, which carries what passes between them, however far the joint has slid (a corner of
+// a softening mode II joint passes the edge's end, and a thin layer's bottom corner lies
+// under its top edge's end: doc/physics.md "Contact and friction").
+bool may_touch(const Nodes& n, const Contact& c, index_t i, index_t e) {
   const index_t f = next_corner(e);
   if (triangle_of(i) == triangle_of(e)) return false;
-  if (n.tie_group[i] == n.tie_group[e] || n.tie_group[i] == n.tie_group[f]) return false;
+  const index_t gi = n.tie_group[i];
+  for (const index_t end : {e, f}) {
+    const index_t g = n.tie_group[end];
+    if (g == gi || std::binary_search(c.bonded_line.begin(), c.bonded_line.end(), bonded_line_key(g, gi)))
+      return false;
+  }
   const auto fixed = [&](index_t k) { return n.constraint[k] == (kFixX | kFixY); };
   return !(fixed(i) && fixed(e) && fixed(f));  // nothing could move
 }
@@ -95,7 +104,7 @@ void build_contact_pairs(const Nodes& n, const Ownership& ownership, Contact& c)
           const std::size_t cell = std::size_t(cy * g.nx + cx);
           for (index_t k = g.offset[cell]; k < g.offset[cell + 1]; ++k) {
             const index_t i = c.surface_node[g.item[k]];
-            if (may_touch(n, i, e) && segment_distance2(n.x[i], n.y[i], n.x[e], n.y[e], n.x[f], n.y[f]) <= reach2)
+            if (may_touch(n, c, i, e) && segment_distance2(n.x[i], n.y[i], n.x[e], n.y[e], n.x[f], n.y[f]) <= reach2)
               pairs.push_back({i, e});
           }
         }

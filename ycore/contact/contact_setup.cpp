@@ -70,8 +70,14 @@ void refresh_contact_surfaces(const Nodes& n, const Joints& jt, Contact& c) {
   // An edge is a surface unless an intact joint covers it. The joint's first triangle's edge
   // starts at its node 0, the second's at its node 2 (Joints::node, ycore/state/state.h).
   c.is_surface_edge.assign(nn, 1);
-  for (std::size_t j = 0; j < jt.size(); ++j)
-    if (!jt.broken[j]) c.is_surface_edge[jt.node[4 * j]] = c.is_surface_edge[jt.node[4 * j + 2]] = 0;
+  c.bonded_line.clear();
+  for (std::size_t j = 0; j < jt.size(); ++j) {
+    if (jt.broken[j]) continue;
+    c.is_surface_edge[jt.node[4 * j]] = c.is_surface_edge[jt.node[4 * j + 2]] = 0;
+    c.bonded_line.push_back(bonded_line_key(n.tie_group[jt.node[4 * j]], n.tie_group[jt.node[4 * j + 1]]));
+  }
+  std::sort(c.bonded_line.begin(), c.bonded_line.end());
+  c.bonded_line.erase(std::unique(c.bonded_line.begin(), c.bonded_line.end()), c.bonded_line.end());
   c.surface_edge.clear();
   for (index_t e = 0; e < nn; ++e)
     if (c.is_surface_edge[e]) c.surface_edge.push_back(e);

@@ -8,6 +8,7 @@
 // corners under intact joints (ycrack/node_sharing.h builds them).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -178,6 +179,11 @@ struct MechanicsBoundary {
 
 // Penalty contact between surface edges (doc/physics.md "Contact and friction"): node-to-edge
 // in both directions, Coulomb friction as an elastic slip capped at mu f_n.
+// Two tie groups as one key, the lower in the high half (Contact::bonded_line).
+inline std::uint64_t bonded_line_key(index_t a, index_t b) {
+  return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+}
+
 struct Contact {
   // constant
   double penalty_pa = 0;              // normal penalty p_n, Pa: a node pressed a depth g into
@@ -192,6 +198,8 @@ struct Contact {
   std::vector<index_t> surface_edge;  // first corners, ascending
   std::vector<index_t> surface_node;  // corners on a surface edge, ascending
   std::vector<std::uint8_t> is_surface_edge;   // [nodes] whether the edge it starts is one
+  std::vector<std::uint64_t> bonded_line;  // tie groups an intact joint's line joins, as
+                                      // bonded_line_key(lower, higher), ascending
   // history: candidate pairs (node, surface edge), sorted by node then edge, from the broad
   // phase, with their friction and last forces, and where the broad phase last looked.
   std::vector<index_t> pair_node, pair_edge;

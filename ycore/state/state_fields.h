@@ -81,6 +81,7 @@ void for_each_topology_field(S& s, Field&& field) {
   field("contact.surface_edge", s.contact.surface_edge);
   field("contact.surface_node", s.contact.surface_node);
   field("contact.is_surface_edge", s.contact.is_surface_edge);
+  field("contact.bonded_line", s.contact.bonded_line);
   field("contact.node_pairs", s.contact.node_pairs);
   field("contact.corner_owner_begin", s.contact.corner_owner_begin);
   field("contact.gather_offset", s.contact.gather_offset);
