@@ -265,3 +265,33 @@ TEST_CASE("a crack that reaches a debonded interface penetrates; the debonding i
   CHECK(cracks[0].penetrating);
   CHECK(interface_debonded_lengths(s) == std::vector<double>{s.joints.length0[interface]});
 }
+
+TEST_CASE("a debonded interface's faces exchange no water with the air; a crack's faces do", "[interfaces]") {
+  TempDir dir;
+  const Deck deck = soil_on_base(dir, {kBonded[0], "moisture.cracks={exchange_coefficient=1.0e-5, air_moisture=0.02}"});
+  State s = prepare_state(deck);
+  const std::uint16_t soil = std::uint16_t(
+      std::find(s.material_names.begin(), s.material_names.end(), "soil") - s.material_names.begin());
+  std::size_t crack = s.joints.size(), debonded = 0;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    if (is_interface_joint(s, j)) {
+      s.joints.broken[j] = 1, ++debonded;
+    } else if (crack == s.joints.size() && s.joints.material[j] == soil) {
+      crack = j;
+    }
+  }
+  REQUIRE(debonded > 0);
+  REQUIRE(crack < s.joints.size());
+  s.joints.broken[crack] = 1;
+  split_across_broken_joints(s, deck);
+  // The deck has no moisture boundary: the exchange terms are the crack's two faces, half its
+  // length at each of their four corners, and none on the whole debonded interface.
+  const double half_area = 0.5 * s.joints.length0[crack] * deck.thickness_m;
+  std::size_t exchanges = 0;
+  for (std::size_t k = 0; k < s.moisture.term_kind.size(); ++k)
+    if (s.moisture.term_kind[k] == MoistureTermKind::exchange) {
+      ++exchanges;
+      CHECK(s.moisture.term_area[k] == Approx(half_area).epsilon(1e-12));
+    }
+  CHECK(exchanges == 4);
+}

@@ -41,22 +41,23 @@ struct Term {
   double area, rate, level;
 };
 
-// Eqs. 10-12: both faces of every broken joint exchange h_c (w_e - w) with the air in the
-// crack, each over half its initial length at each of its two end corners' moisture nodes. A
-// crack-tip node so gets a half of both faces (Eqs. 15 and 16), each term at the node's own w
-// (doc/physics.md "Cracks and moisture": Eq. 15 as printed takes w_1 there). A face of a
-// material without moisture has none: a debonded interface's other side may be one
+// Eqs. 10-12: both faces of every broken joint of a material exchange h_c (w_e - w) with the
+// air in the crack, each over half its initial length at each of its two end corners'
+// moisture nodes. A crack-tip node so gets a half of both faces (Eqs. 15 and 16), each term at
+// the node's own w (doc/physics.md "Cracks and moisture": Eq. 15 as printed takes w_1 there).
+// A debonded interface is no crack: its faces rest on each other, and exchange nothing
 // (doc/physics.md "Interface joints").
-void append_crack_face_terms(const Nodes& nodes, const Joints& joints, const Deck& deck, std::vector<Term>& terms) {
+void append_crack_face_terms(const MoistureMesh& mesh, const Deck& deck, std::vector<Term>& terms) {
   const double h_c = deck.crack_exchange_coefficient;
   if (h_c <= 0.0) return;
+  const Joints& joints = mesh.joints;
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const index_t* n = &joints.node[4 * j];
-    if (!joints.broken[j]) continue;
-    const double half_area = half_edge_area(nodes, deck, n[0], n[1]);  // both faces: the joint's length
-    for (int k = 0; k < 4; ++k)  // face 1: nodes 0, 1; face 2: nodes 2, 3
-      if (nodes.mnode[n[k]] != kNoIndex)
-        terms.push_back({nodes.mnode[n[k]], MoistureTermKind::exchange, half_area, h_c, deck.crack_air_moisture});
+    if (!joints.broken[j] || joints.material[j] >= mesh.material_names.size()) continue;
+    const double half_area = half_edge_area(mesh.nodes, deck, n[0], n[1]);  // both faces: the joint's length
+    for (int k = 0; k < 4; ++k)  // face 1: nodes 0, 1; face 2: nodes 2, 3 (none without moisture)
+      if (mesh.nodes.mnode[n[k]] != kNoIndex)
+        terms.push_back({mesh.nodes.mnode[n[k]], MoistureTermKind::exchange, half_area, h_c, deck.crack_air_moisture});
   }
 }
 
@@ -91,7 +92,7 @@ void add_boundary_terms(const MoistureMesh& mesh, const Deck& deck, MoistureNode
     if (!touches_moisture)
       throw InputError(bc.where + ": boundary \"" + bc.on + "\" touches no material with moisture_conductivity");
   }
-  append_crack_face_terms(mesh.nodes, mesh.joints, deck, terms);
+  append_crack_face_terms(mesh, deck, terms);
 
   // CSR by moisture node; stable, so each node's terms keep deck order, crack faces last.
   std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.mnode < b.mnode; });
