@@ -237,7 +237,7 @@ TEST_CASE("no contact force between triangles still tied by an intact joint, how
   // Pressed 10 um through each other, or slid 90 % of the joint's length along it (as a
   // softening mode II joint lets them): each triangle's corner then lies 0.1 mm inside the
   // other's side, past that side's end by nothing, which only the joint may carry.
-  for (const auto [slide, overlap] : {std::pair{0.1, 1e-5}, std::pair{0.9, 0.0}}) {
+  for (const auto& [slide, overlap] : {std::pair{0.1, 1e-5}, std::pair{0.9, 0.0}}) {
     ydry_test::TempDir dir;
     State s = two_triangles(dir);
     const Face face = first_face(s);
