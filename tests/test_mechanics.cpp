@@ -487,21 +487,30 @@ TEST_CASE("shrinkage results do not depend on the relaxation controls", "[mechan
     return std::tuple<double, double, std::uint64_t>{s.mechanics_boundaries[1].reaction_y, left / nl - right / nr,
                                                      s.mechanics.steps};
   };
-  const auto [reaction, shortening, steps] = figures({});
+  double reaction = 0, shortening = 0;
+  std::uint64_t steps = 0;
+  std::tie(reaction, shortening, steps) = figures({});  // Newton, the default
   CHECK(reaction / 0.1 == Approx(20000.0).epsilon(0.005));
   CHECK(shortening == Approx(2.4e-3).epsilon(0.005));
-  // The tolerance halved, the pseudo-step halved, the physical masses and FIRE in place of
-  // the damping change the relaxation's path; a doubled step cap changes nothing when the
-  // default relaxation ends on its tolerance, as it must.
-  for (const char* set : {"solver.relaxation_tolerance=5e-8", "solver.mechanics_safety=0.4",
-                          "solver.relaxation_max_steps=400000", "solver.node_mass_scaling=false",
-                          "solver.relaxation=\"fire\"", "solver.relaxation=\"newton\""}) {
-    INFO(set);
-    const auto [r, d, n] = figures({set});
+  // The same answer with the tolerance halved (never in fewer iterations), with FIRE or the
+  // damping in place of Newton, and with the damping's pseudo-step halved or its physical
+  // masses, which change its path; a doubled step cap changes nothing when a relaxation ends
+  // on its tolerance, as it must.
+  const auto same_answer = [&](const std::vector<std::string>& sets) {
+    INFO(sets.back());
+    const auto [r, d, n] = figures(sets);
     CHECK(r == Approx(reaction).epsilon(1e-3));
     CHECK(d == Approx(shortening).epsilon(1e-3));
-    if (std::string(set).find("max_steps") == std::string::npos) CHECK(n != steps);
-  }
+    return n;
+  };
+  const std::string viscous = "solver.relaxation=\"viscous\"";
+  CHECK(same_answer({"solver.relaxation_tolerance=5e-8"}) >= steps);
+  CHECK(same_answer({"solver.relaxation=\"fire\""}) != steps);
+  const std::uint64_t viscous_steps = same_answer({viscous});
+  CHECK(viscous_steps != steps);
+  CHECK(same_answer({viscous, "solver.mechanics_safety=0.4"}) != viscous_steps);
+  CHECK(same_answer({viscous, "solver.node_mass_scaling=false"}) != viscous_steps);
+  CHECK(same_answer({viscous, "solver.relaxation_max_steps=400000"}) == viscous_steps);
 }
 
 TEST_CASE("pre-existing cracks of the deck break the joints along a segment and split the moisture field there", "[mechanics]") {

@@ -128,7 +128,7 @@ struct Deck {
   // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood),
   // "fire" (FIRE, Bitzek et al. 2006; ycore/solid/relaxation.cpp) or "newton" (Newton on the
   // out-of-balance force with a trust region, FIRE where it stops; ycore/solid/newton.cpp).
-  RelaxationMethod relaxation = RelaxationMethod::viscous;
+  RelaxationMethod relaxation = RelaxationMethod::newton;
   // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
   // instead of relaxing to equilibrium after each coupling step.
   bool dynamic = false;
