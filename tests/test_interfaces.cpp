@@ -295,3 +295,21 @@ TEST_CASE("a debonded interface's faces exchange no water with the air; a crack'
     }
   CHECK(exchanges == 4);
 }
+
+TEST_CASE("log.txt names each bonded interface with its joints and properties", "[interfaces][output]") {
+  TempDir dir;
+  const State s = prepare_state(soil_on_base(dir, kBonded));  // writes dir's deck.toml
+  REQUIRE(s.interface_names.size() == 1);
+  std::size_t joints = 0;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) joints += is_interface_joint(s, j);
+  REQUIRE(joints > 0);
+  // Without gravity: nothing supports the two bodies, which under their weight would fall.
+  const CommandResult r = run_ydry(dir.file("deck.toml") + " -o " + dir.file("out") + " --quiet --set '" + kBonded[0] +
+                                   "' --set run.gravity=[0.0,0.0]");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string log = read_text(dir.file("out/log.txt"));
+  CHECK(log.find("interfaces." + s.interface_names[0] + ": " + std::to_string(joints) +
+                 " bonded joints, tensile strength 2000 Pa, cohesion 3000 Pa, friction angle 25 degrees, gf_I 1 "
+                 "J/m^2, gf_II 2 J/m^2") != std::string::npos);
+}

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "version.h"
@@ -23,6 +24,19 @@ std::string strength_factor_line(const State& s, std::size_t material, std::int6
        << " joints (Weibull, mean 1, coefficient of variation " << cv << ", modulus "
        << 1.0 / unit_mean_weibull(cv).inverse_shape << ", seed " << seed << "): min " << r.min << ", mean "
        << r.mean << ", max " << r.max;
+  return line.str();
+}
+
+// A bonded interface: its joints and the properties they carry (doc/physics.md "Interface joints").
+std::string interface_line(const State& s, std::size_t interface) {
+  const std::size_t id = s.material_names.size() + interface;
+  const std::size_t joints = std::size_t(std::count(s.joints.material.begin(), s.joints.material.end(), std::uint16_t(id)));
+  const MaterialModel& m = s.materials[id];
+  std::ostringstream line;
+  line << "interfaces." << s.interface_names[interface] << ": " << joints << " bonded joints, tensile strength "
+       << m.tensile_strength << " Pa, cohesion " << m.cohesion << " Pa, friction angle "
+       << std::atan(m.tan_friction) * 180.0 / M_PI << " degrees, gf_I " << m.gf_I << " J/m^2, gf_II " << m.gf_II
+       << " J/m^2, penalty " << m.penalty << " Pa";
   return line.str();
 }
 
@@ -64,6 +78,7 @@ void log_set_up(Log& log, const State& state, const Deck& deck, double max_step_
   if (deck.mechanics)
     for (std::size_t m = 0; m < state.materials.size(); ++m)
       if (state.materials[m].strength_heterogeneity > 0.0) log.info(strength_factor_line(state, m, deck.seed));
+  for (std::size_t i = 0; i < state.interface_names.size(); ++i) log.info(interface_line(state, i));
   log.info(steps_line(state, deck, max_step_s) + "; output to " + outdir);
 }
 

@@ -209,6 +209,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   Pattern pattern;
   double mu = kMinMu;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
+    // The force passes of the line search book their own stages; the rest is "solve".
+    StageClock model_clock;
     const Eigen::SparseMatrix<double> K_solid = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free);
     metric.scale = K_solid.diagonal().sum() / metric.mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);
@@ -219,9 +221,12 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
     // The pattern is the same whichever links are active; the ordering is found again only
     // when it changes (a joint breaks, a pair comes near).
     analyse_if_new(model_tangent(K_solid, links, active, free), pattern, solver);
+    model_clock.lap(s.wall.solve);
     bool accepted = false;
     while (!accepted && mu <= kMaxMu && out.iterations < cap) {
+      StageClock step_clock;
       Eigen::VectorXd du = model_step(K_solid, links, free, f, metric, mu, active, solver, out);
+      step_clock.lap(s.wall.solve);
       if (du.size() == 0 || !(f.dot(du) > 0.0)) {  // not positive definite, or uphill
         mu *= 10.0;
         continue;
@@ -241,8 +246,10 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   std::fill(n.vx.begin(), n.vx.end(), 0.0);
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
   s.contact.damping_ratio = damping;
+  StageClock booking_clock;
   s.joints.work = joint_work;
   book_joint_work(n, s.mechanics, s.materials, s.mechanics.x_start, s.mechanics.y_start, s.joints);
+  booking_clock.lap(s.wall.solve);
   return out;
 }
 

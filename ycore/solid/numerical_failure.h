@@ -16,8 +16,9 @@ struct NumericalFailure : std::runtime_error {
 // What usually makes an explicit FDEM run fail, for the end of the messages.
 inline constexpr const char* kNumericalFailureCauses =
     "the explicit step is likely too long for the stiffness (lower solver.mechanics_safety, "
-    "solver.joint_penalty or contact.penalty), or an element has inverted (a mesh too coarse for "
-    "its strains, a material too soft for its load)";
+    "solver.joint_penalty or contact.penalty), an element has inverted (a mesh too coarse for "
+    "its strains, a material too soft for its load), or a body falls: nothing (a support, a "
+    "contact, a bond) holds it against its load, gravity say";
 
 // "node I of triangle T (material M, initially at x = X m, y = Y m)": where a failure is.
 std::string describe_node(const State& state, index_t node);

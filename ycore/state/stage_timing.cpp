@@ -8,7 +8,8 @@ namespace ydry {
 
 std::vector<std::pair<std::string, double>> wall_by_stage(const StageSeconds& w, double wall_s) {
   return {{"moisture", w.moisture}, {"elements", w.elements}, {"joints", w.joints},   {"contact", w.contact},
-          {"gather", w.gather},     {"cracking", w.cracking}, {"other", std::max(0.0, wall_s - w.total())}};
+          {"gather", w.gather},     {"solve", w.solve},       {"cracking", w.cracking},
+          {"other", std::max(0.0, wall_s - w.total())}};
 }
 
 std::string wall_by_stage_text(const StageSeconds& w, double wall_s) {

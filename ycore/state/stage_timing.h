@@ -18,8 +18,10 @@ struct StageSeconds {
   double joints = 0;    // joint forces
   double contact = 0;   // contact search and forces
   double gather = 0;    // joint and contact forces into the nodes, and the relaxation's measures
+  double solve = 0;     // Newton's tangents, sparse factorisations and solves, and its booking
+                        // of the joints' work
   double cracking = 0;  // damage commit, and the node ties and moisture nodes split after breakage
-  double total() const { return moisture + elements + joints + contact + gather + cracking; }
+  double total() const { return moisture + elements + joints + contact + gather + solve + cracking; }
 };
 
 // The stages by name, then "other": the rest of wall_s (the set-up but for its initial
