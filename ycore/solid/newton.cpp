@@ -133,6 +133,7 @@ Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
 Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
                                           const std::vector<std::uint8_t>& active, const FreeComponents& free) {
   std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(72 * links.size());  // two 6 x 6 blocks a link
   add_link_stiffness(links, active, free.unknown, entries);
   Eigen::SparseMatrix<double> K(K_solid.rows(), K_solid.cols());
   K.setFromTriplets(entries.begin(), entries.end());
