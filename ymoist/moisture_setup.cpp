@@ -53,7 +53,7 @@ void append_crack_face_terms(const MoistureMesh& mesh, const Deck& deck, std::ve
   const Joints& joints = mesh.joints;
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const index_t* n = &joints.node[4 * j];
-    if (!joints.broken[j] || joints.material[j] >= mesh.material_names.size()) continue;
+    if (!joints.broken[j] || is_interface_joint(joints, mesh.material_names.size(), j)) continue;
     const double half_area = half_edge_area(mesh.nodes, deck, n[0], n[1]);  // both faces: the joint's length
     for (int k = 0; k < 4; ++k)  // face 1: nodes 0, 1; face 2: nodes 2, 3 (none without moisture)
       if (mesh.nodes.mnode[n[k]] != kNoIndex)

@@ -58,7 +58,7 @@ Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& t
                                               const Mechanics& mech, const std::vector<MaterialModel>& materials,
                                               const FreeComponents& free) {
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(36 * tri.size() + 64 * jt.size());  // at most a part's (2 corners)^2 each
+  entries.reserve(36 * tri.size() + 64 * jt.size());  // at most (2 x corners)^2 a part
   for (std::size_t e = 0; e < tri.size(); ++e) {
     const MaterialModel& m = materials[tri.material[e]];
     if (!m.mechanical) continue;

@@ -177,13 +177,13 @@ struct MechanicsBoundary {
   double work_J = 0;            // work done on the solid through this boundary since t = 0
 };
 
-// Penalty contact between surface edges (doc/physics.md "Contact and friction"): node-to-edge
-// in both directions, Coulomb friction as an elastic slip capped at mu f_n.
 // Two tie groups as one key, the lower in the high half (Contact::bonded_line).
 inline std::uint64_t bonded_line_key(index_t a, index_t b) {
   return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
 }
 
+// Penalty contact between surface edges (doc/physics.md "Contact and friction"): node-to-edge
+// in both directions, Coulomb friction as an elastic slip capped at mu f_n.
 struct Contact {
   // constant
   double penalty_pa = 0;              // normal penalty p_n, Pa: a node pressed a depth g into
@@ -268,7 +268,11 @@ struct State {
   StageSeconds wall;
 };
 
-// Whether joint j ties two materials (a bonded interface's) rather than the triangles of one.
-inline bool is_interface_joint(const State& s, std::size_t j) { return s.joints.material[j] >= s.material_names.size(); }
+// Whether joint j ties two materials (a bonded interface's) rather than the triangles of one:
+// its property index lies past the `materials` materials' (Joints::material).
+inline bool is_interface_joint(const Joints& joints, std::size_t materials, std::size_t j) {
+  return joints.material[j] >= materials;
+}
+inline bool is_interface_joint(const State& s, std::size_t j) { return is_interface_joint(s.joints, s.material_names.size(), j); }
 
 }  // namespace ydry
