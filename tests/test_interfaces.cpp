@@ -12,6 +12,7 @@
 #include "ycore/driver/coupling.h"
 #include "ycore/driver/setup.h"
 #include "ycore/input/input_error.h"
+#include "ycore/solid/energies.h"
 #include "ycore/state/build_state.h"
 #include "ycrack/crack_statistics.h"
 #include "ycrack/interface_debonding.h"
@@ -312,4 +313,46 @@ TEST_CASE("log.txt names each bonded interface with its joints and properties", 
   CHECK(log.find("interfaces." + s.interface_names[0] + ": " + std::to_string(joints) +
                  " bonded joints, tensile strength 2000 Pa, cohesion 3000 Pa, friction angle 25 degrees, gf_I 1 "
                  "J/m^2, gf_II 2 J/m^2") != std::string::npos);
+}
+
+TEST_CASE("an interface between two deformable materials opens at its strength and dissipates its gf_I",
+          "[interfaces]") {
+  // The 2 x 1 m rectangle, base under soil, both elastic (E 16 and 4 MPa, nu = 0) and
+  // unbreakable, held at the bottom and pulled up at the top: a uniaxial stress, the same in
+  // both layers and on the whole interface, whose joints open as one cohesive crack of area
+  // A = 2 m x 1 m. So the top's reaction peaks at f_t A, the broken joints' work is gf_I A,
+  // and at the peak the base's top has risen by (f_t / E_base) x 0.5 m.
+  TempDir dir;
+  const Deck deck = soil_on_base(
+      dir, {kBonded[0], "run.gravity=[0.0, 0.0]", "run.end_time=250.0", "solver.max_coupling_step=1.0",
+            "materials.soil.young=4.0e6", "materials.soil.poisson=0.0", "materials.soil.breakable=false",
+            "materials.base.young=1.6e7", "materials.base.poisson=0.0",
+            "mechanics.boundary=[{on=\"bottom\", fix=[\"x\", \"y\"]}, {on=\"top\", velocity=[0.0, 1.0e-5]}]"});
+  State s = setup_state(deck);
+  const auto top = std::find_if(s.mechanics_boundaries.begin(), s.mechanics_boundaries.end(),
+                                [](const MechanicsBoundary& b) { return b.name == "top"; });
+  REQUIRE(top != s.mechanics_boundaries.end());
+  const std::uint16_t base = std::uint16_t(
+      std::find(s.material_names.begin(), s.material_names.end(), "base") - s.material_names.begin());
+  const auto base_top_rise = [&] {  // mean over the base's corners on the interface
+    double sum = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (s.triangles.material[triangle_of(index_t(i))] == base && std::fabs(s.nodes.y0[i] - 0.5) < 1e-9)
+        sum += s.nodes.y[i] - s.nodes.y0[i], ++count;
+    return sum / count;
+  };
+  const double area = 2.0 * deck.thickness_m, strength = 2.0e3, gf_I = 1.0;
+  double peak = 0, rise_at_peak = 0, step_limit = coupling_step_limit(s, deck);
+  for (double t = 1.0; t <= deck.end_time_s; t += 1.0) {
+    step_limit = advance_to(s, deck, t, step_limit);
+    if (top->reaction_y > peak) peak = top->reaction_y, rise_at_peak = base_top_rise();
+  }
+  CHECK(s.mechanics.capped_relaxations == 0);
+  CHECK(peak / area == Approx(strength).epsilon(0.02));
+  CHECK(rise_at_peak == Approx(peak / area / 1.6e7 * 0.5).epsilon(0.02));
+  const std::vector<double> debonded = interface_debonded_lengths(s);
+  REQUIRE(debonded.size() == 1);
+  CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
+  CHECK(energies(s).fracture_J / area == Approx(gf_I).epsilon(0.02));
 }
