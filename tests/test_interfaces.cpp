@@ -1,6 +1,7 @@
 // Bonded interfaces between two materials (doc/physics.md "Interface joints", doc/deck.md
 // "[interfaces.A_B]"): the deck's keys and errors, which edges carry joints, the moisture
-// nodes, and a bonded cracking run on 1 and 2 threads.
+// nodes, a bonded cracking run on 1 and 2 threads, and the law between two deformable materials
+// (verification/interface_debonding checks it against a rigid base).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
