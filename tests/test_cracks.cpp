@@ -278,8 +278,7 @@ TEST_CASE("a crack rising from the interface with a base is measured there and i
   State s = build_state(mesh, deck);
   REQUIRE(break_vertical(s, 0.01, kCell, 2 * kCell) == 1);   // from the base up to 10 mm
   REQUIRE(break_vertical(s, 0.03, kHeight - kCell, kHeight) == 1);  // from the top down to 15 mm
-  const std::uint16_t soil = std::uint16_t(std::find(s.material_names.begin(), s.material_names.end(), "soil") -
-                                           s.material_names.begin());
+  const std::uint16_t soil = ydry_test::material_id(s, "soil");
   for (const auto& [x, opening] : {std::pair{0.01, 100e-6}, std::pair{0.03, 60e-6}})
     for (index_t t = 0; t < s.triangles.size(); ++t)
       if (s.triangles.material[t] == soil && centroid_x0(s, t) > x)

@@ -549,8 +549,7 @@ TEST_CASE("a rigid material stays put and never sets the time step", "[mechanics
     return setup_state(load_deck(YDRY_SOURCE_DIR "/tests/data/two_materials.toml", sets));
   };
   const State s = state("");
-  const std::uint16_t base = std::uint16_t(std::find(s.material_names.begin(), s.material_names.end(), "base") -
-                                           s.material_names.begin());
+  const std::uint16_t base = ydry_test::material_id(s, "base");
   double soil_motion = 0;
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {
     const double motion = std::hypot(s.nodes.x[i] - s.nodes.x0[i], s.nodes.y[i] - s.nodes.y0[i]);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/test_support.h"
 #include "ycore/state/build_state.h"
 
 using namespace ydry;
@@ -14,12 +15,6 @@ namespace {
 const double kLength = 0.295, kHeight = 0.012;  // the soil layer above the base's top, m
 const double kNotch = 0.002;                     // notch width = depth = gap between notches, m
 const int kNotches = 73;                         // as many as fit in 295 mm at a 4 mm pitch
-
-std::uint16_t material_id(const State& s, const std::string& name) {
-  const auto it = std::find(s.material_names.begin(), s.material_names.end(), name);
-  REQUIRE(it != s.material_names.end());
-  return std::uint16_t(it - s.material_names.begin());
-}
 
 // The edges of boundary `name` on triangles of `material`, as (first, second) corner pairs.
 std::vector<std::pair<index_t, index_t>> boundary_edges_of(const State& s, const std::string& name,
@@ -41,7 +36,7 @@ TEST_CASE("the Peron mesh is the paper's layer filling the notches of a base it 
           "[deck][peron]") {
   const Deck deck = load_deck(YDRY_SOURCE_DIR "/inputs/peron/peron.toml", {});
   const State s = build_state(load_mesh(deck), deck);
-  const std::uint16_t soil = material_id(s, "soil"), base = material_id(s, "base");
+  const std::uint16_t soil = ydry_test::material_id(s, "soil"), base = ydry_test::material_id(s, "base");
 
   // The layer plus one 2 x 2 mm tooth per notch (exact for straight edges: round-off only).
   double soil_area = 0.0;

@@ -10,6 +10,7 @@
 #include <random>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <type_traits>
 
 #include "ycore/solid/energies.h"
@@ -146,6 +147,12 @@ CommandResult run_ydry(const std::string& arguments) {
   while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) output.append(buf, n);
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::uint16_t material_id(const ydry::State& state, const std::string& name) {
+  const auto it = std::find(state.material_names.begin(), state.material_names.end(), name);
+  if (it == state.material_names.end()) throw std::out_of_range("no material " + name);
+  return std::uint16_t(it - state.material_names.begin());
 }
 
 }  // namespace ydry_test

@@ -49,6 +49,10 @@ extern const std::vector<std::string> kCrackingLayer;
 using Snapshot = std::map<std::string, std::vector<double>>;
 Snapshot state_snapshot(const ydry::State& state);
 
+// The index of the material `name` in state.material_names; throws std::out_of_range if it has
+// none.
+std::uint16_t material_id(const ydry::State& state, const std::string& name);
+
 // Whether two arrays hold the same bits.
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b);
 
