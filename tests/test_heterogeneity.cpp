@@ -80,10 +80,10 @@ TEST_CASE("strength factors belong to the mesh edge, not to the joint's place in
   for (std::size_t j = 0; j < nj; ++j) {
     const std::size_t from = nj - 1 - j;
     for (int k = 0; k < 4; ++k) node[4 * j + k] = jt.node[4 * from + (k + 2) % 4];
-    material[j] = jt.material[from];
+    material[j] = jt.law[from];
   }
   jt.node = node;
-  jt.material = material;
+  jt.law = material;
   set_strength_factors(jt, s.nodes, s.materials, 11);
   CHECK(factor_by_edge(s) == before);
 }

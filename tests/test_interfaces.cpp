@@ -149,7 +149,7 @@ TEST_CASE("without a bonded interface the joints are the edges inside one materi
   const State s0 = build_state(mesh, plain), s1 = build_state(mesh, bonded), s2 = build_state(mesh, unbonded);
   CHECK(s0.joints.size() == inside);
   CHECK(s2.joints.node == s0.joints.node);  // bonded = false: contact only, the joints of no interface
-  CHECK(s2.joints.material == s0.joints.material);
+  CHECK(s2.joints.law == s0.joints.law);
   REQUIRE(s1.joints.size() == inside + interface.size());
   CHECK(s1.interface_names == std::vector<std::string>{"base_soil"});
   std::set<std::pair<index_t, index_t>> bonded_edges;
@@ -158,10 +158,10 @@ TEST_CASE("without a bonded interface the joints are the edges inside one materi
     const std::uint16_t m1 = s1.triangles.material[triangle_of(s1.joints.node[4 * j + 2])];
     CHECK(is_interface_joint(s1, j) == (m0 != m1));
     if (!is_interface_joint(s1, j)) {
-      CHECK(s1.joints.material[j] == m0);
+      CHECK(s1.joints.law[j] == m0);
       continue;
     }
-    CHECK(s1.joints.material[j] == s1.material_names.size());  // the first interface's properties
+    CHECK(s1.joints.law[j] == s1.material_names.size());  // the first interface's properties
     bonded_edges.insert(joint_edge(s1, j));
   }
   CHECK(bonded_edges == interface);
@@ -241,7 +241,7 @@ TEST_CASE("a crack that reaches a debonded interface penetrates; the debonding i
   std::size_t crack = s.joints.size(), interface = s.joints.size();
   for (std::size_t j = 0; j < s.joints.size() && interface == s.joints.size(); ++j) {
     const index_t* n = &s.joints.node[4 * j];
-    if (s.joints.material[j] != base || s.nodes.y0[n[0]] <= base_bottom + 1e-9 || s.nodes.y0[n[1]] <= base_bottom + 1e-9)
+    if (s.joints.law[j] != base || s.nodes.y0[n[0]] <= base_bottom + 1e-9 || s.nodes.y0[n[1]] <= base_bottom + 1e-9)
       continue;
     const index_t top = s.nodes.y0[n[0]] > s.nodes.y0[n[1]] ? n[0] : n[1];
     if (std::fabs(s.nodes.y0[top] - 0.5) > 1e-9) continue;
@@ -275,7 +275,7 @@ TEST_CASE("a debonded interface's faces exchange no water with the air; a crack'
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     if (is_interface_joint(s, j)) {
       s.joints.broken[j] = 1, ++debonded;
-    } else if (crack == s.joints.size() && s.joints.material[j] == soil) {
+    } else if (crack == s.joints.size() && s.joints.law[j] == soil) {
       crack = j;
     }
   }

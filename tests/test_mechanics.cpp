@@ -248,7 +248,7 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
     bool intact = !s.joints.broken[j];
     for (int p = 0; p < 3; ++p) {
       const double a = kJointPointShareOfEnd0[p], b = 1.0 - a;
-      const PointTraction t = cohesive_traction(s.materials[s.joints.material[j]], s.joints.strength_factor[j],
+      const PointTraction t = cohesive_traction(s.materials[s.joints.law[j]], s.joints.strength_factor[j],
                                                 s.joints.length0[j], a * kin.opening[0] + b * kin.opening[1],
                                                 a * kin.slip[0] + b * kin.slip[1], s.joints.damage[3 * j + p]);
       intact = intact && t.damage == 0.0 && s.joints.damage[3 * j + p] == 0.0;
@@ -571,7 +571,7 @@ TEST_CASE("the joint kernel computes every joint of a material with mechanics, r
   const std::vector<index_t>& runs = start.joints.mechanical_runs;
   REQUIRE(runs.size() >= 2 * 100);
   std::size_t rigid = 0;
-  for (std::size_t j = 0; j < start.joints.size(); ++j) rigid += !start.materials[start.joints.material[j]].mechanical;
+  for (std::size_t j = 0; j < start.joints.size(); ++j) rigid += !start.materials[start.joints.law[j]].mechanical;
   REQUIRE(rigid > 0);
   std::mt19937 rng(3);
   std::normal_distribution<double> unit(0.0, 1.0);

@@ -30,7 +30,7 @@ std::string strength_factor_line(const State& s, std::size_t material, std::int6
 // A bonded interface: its joints and the properties they carry (doc/physics.md "Interface joints").
 std::string interface_line(const State& s, std::size_t interface) {
   const std::size_t id = s.material_names.size() + interface;
-  const std::size_t joints = std::size_t(std::count(s.joints.material.begin(), s.joints.material.end(), std::uint16_t(id)));
+  const std::size_t joints = std::size_t(std::count(s.joints.law.begin(), s.joints.law.end(), std::uint16_t(id)));
   const MaterialModel& m = s.materials[id];
   std::ostringstream line;
   line << "interfaces." << s.interface_names[interface] << ": " << joints << " bonded joints, tensile strength "

@@ -10,7 +10,7 @@ namespace ydry {
 std::size_t commit_joint_damage(const Nodes& n, const Ownership& ownership, const std::vector<MaterialModel>& materials,
                                 Joints& jt) {
   const auto broke = blocked_sum<1>(jt.size(), [&](std::size_t j, std::array<double, 1>& sum) {
-    const MaterialModel& m = materials[jt.material[j]];
+    const MaterialModel& m = materials[jt.law[j]];
     if (jt.broken[j] || !m.mechanical || !m.breakable) return;
     const JointKinematics k = joint_kinematics(n, &jt.node[4 * j]);
     int failed = 0;

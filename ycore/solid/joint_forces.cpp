@@ -142,7 +142,7 @@ void gather_chunk(const Nodes& n, const Joints& jt, const std::vector<MaterialMo
       const index_t ahead = jt.node[4 * (j + kPrefetchJoints) + 2];
       for (const double* a : {&n.x[ahead], &n.y[ahead], &n.vx[ahead], &n.vy[ahead]}) __builtin_prefetch(a);
     }
-    const MaterialModel& m = materials[jt.material[j]];
+    const MaterialModel& m = materials[jt.law[j]];
     if (jt.broken[j] || !m.breakable) {
       out.pass[i] = jt.broken[j] ? JointPass::broken : JointPass::scalar;
       continue;
@@ -198,7 +198,7 @@ void take_pre_peak(const Joints& jt, const std::vector<MaterialModel>& materials
       const double y[4] = {c.y[0][p], c.y[1][p], c.y[2][p], c.y[3][p]};
       const JointStrength strength{c.k[p], c.tensile[p], c.cohesion[p], c.peak_opening[p]};
       out.pass[i] = JointPass::softened;
-      add_softened(d, i, x, y, strength, c.h0[p], materials[jt.material[j]], &jt.damage[3 * j]);
+      add_softened(d, i, x, y, strength, c.h0[p], materials[jt.law[j]], &jt.damage[3 * j]);
       continue;
     }
     for (int k = 0; k < 8; ++k) out.fresh[k][i] = c.fresh[k][p];
@@ -275,7 +275,7 @@ void joint_nodal_forces(const Nodes& n, const Joints& jt, const Mechanics& mech,
 
 void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::vector<MaterialModel>& materials,
                            std::size_t j, const double x[4], const double y[4], double out[8]) {
-  const MaterialModel& m = materials[jt.material[j]];
+  const MaterialModel& m = materials[jt.law[j]];
   if (jt.broken[j] || !m.mechanical) {
     for (int k = 0; k < 8; ++k) out[k] = 0.0;
     return;

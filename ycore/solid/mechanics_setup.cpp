@@ -80,7 +80,7 @@ MaterialModel interface_model(const InterfaceDeck& f, const MaterialModel& a, co
   return m;
 }
 
-// Where the deck gives the properties of joints with properties `id` (Joints::material).
+// Where the deck gives the properties of joints with properties `id` (Joints::law).
 const std::string& joint_properties_where(const State& s, const Deck& deck, std::size_t id) {
   const std::size_t nm = s.material_names.size();
   if (id < nm) return deck.materials.at(s.material_names[id]).where;
@@ -126,7 +126,7 @@ void set_joint_data(State& s, const Deck& deck) {
   for (std::size_t k = 0; k < nj; ++k) {
     const index_t a = j.node[4 * k], b = j.node[4 * k + 1];
     j.length0[k] = std::hypot(n.x0[b] - n.x0[a], n.y0[b] - n.y0[a]);
-    if (!s.materials[j.material[k]].mechanical) continue;  // carries nothing, ever
+    if (!s.materials[j.law[k]].mechanical) continue;  // carries nothing, ever
     if (j.mechanical_runs.empty() || j.mechanical_runs.back() != k)
       j.mechanical_runs.insert(j.mechanical_runs.end(), {index_t(k), index_t(k + 1)});
     else
@@ -143,7 +143,7 @@ void set_joint_data(State& s, const Deck& deck) {
   std::vector<double> largest(s.materials.size(), 0.0);  // h x factor^2, m
   for (std::size_t k = 0; k < nj; ++k) {
     const double f = j.strength_factor[k];
-    largest[j.material[k]] = std::max(largest[j.material[k]], j.length0[k] * f * f);
+    largest[j.law[k]] = std::max(largest[j.law[k]], j.length0[k] * f * f);
   }
   for (std::size_t id = 0; id < s.materials.size(); ++id) {
     const MaterialModel& m = s.materials[id];

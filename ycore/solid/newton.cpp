@@ -87,7 +87,7 @@ void book_joint_work(const Nodes& n, const Mechanics& mech, const std::vector<Ma
                                         0.1111905172266872, 0.0506142681451881};
 #pragma omp parallel for schedule(static) if (jt.size() > parallel_minimum)
   for (std::size_t j = 0; j < jt.size(); ++j) {
-    if (jt.broken[j] || !materials[jt.material[j]].mechanical) continue;
+    if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
     const index_t* node = &jt.node[4 * j];
     double dx[4], dy[4], x[4], y[4], f[8], work = 0.0;
     for (int k = 0; k < 4; ++k) dx[k] = n.x[node[k]] - x_from[node[k]], dy[k] = n.y[node[k]] - y_from[node[k]];

@@ -28,7 +28,7 @@ std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, c
       double k = thickness * (m.lambda + 2.0 * m.mu) * edge[a] * perimeter / (2.0 * tri.area0[e]);
       for (int slot = 0; slot < 2; ++slot) {  // row sum ~ p t, p the joint's (an interface's may differ)
         const index_t js = n.joint_slot[2 * (i + a) + slot];
-        if (js != kNoIndex) k += materials[jt.material[js / 4]].penalty * thickness;
+        if (js != kNoIndex) k += materials[jt.law[js / 4]].penalty * thickness;
       }
       bound[i + a] = k + contact;
     }

@@ -48,7 +48,7 @@ void set_strength_factors(Joints& jt, const Nodes& n, const std::vector<Material
     weibull.push_back(unit_mean_weibull(m.breakable ? m.strength_heterogeneity : 0.0));
   jt.strength_factor.assign(jt.size(), 1.0);
   for (std::size_t j = 0; j < jt.size(); ++j) {
-    const UnitMeanWeibull& w = weibull[jt.material[j]];
+    const UnitMeanWeibull& w = weibull[jt.law[j]];
     if (w.inverse_shape > 0.0)
       jt.strength_factor[j] = strength_factor(seed, n.vertex[jt.node[4 * j]], n.vertex[jt.node[4 * j + 1]], w);
   }
@@ -58,7 +58,7 @@ StrengthFactorRange strength_factor_range(const Joints& jt, std::uint16_t materi
   StrengthFactorRange r;
   double sum = 0.0;
   for (std::size_t j = 0; j < jt.size(); ++j) {
-    if (jt.material[j] != material) continue;
+    if (jt.law[j] != material) continue;
     const double f = jt.strength_factor[j];
     r.min = r.joints ? std::min(r.min, f) : f;
     r.max = r.joints ? std::max(r.max, f) : f;

@@ -29,7 +29,7 @@ UnitMeanWeibull unit_mean_weibull(double cv);
 // The factor of the joint on the mesh edge between vertex_a and vertex_b (either order).
 double strength_factor(std::uint64_t seed, index_t vertex_a, index_t vertex_b, const UnitMeanWeibull& weibull);
 
-// joints.strength_factor of every joint: drawn where the joint's material is breakable with a
+// joints.strength_factor of every joint: drawn where the joint's law is breakable with a
 // strength_heterogeneity above 0, exactly 1 elsewhere. The vertex ids are nodes.vertex.
 void set_strength_factors(Joints& joints, const Nodes& nodes, const std::vector<MaterialModel>& materials,
                           std::uint64_t seed);

@@ -73,7 +73,7 @@ Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& t
     }, entries);
   }
   for (std::size_t j = 0; j < jt.size(); ++j) {
-    if (jt.broken[j] || !materials[jt.material[j]].mechanical) continue;
+    if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
     add_part_tangent<4>(&jt.node[4 * j], n, free, kRelativeStep * jt.length0[j],
                         [&](const double* x, const double* y, double* f) {
                           joint_nodal_forces_at(jt, mech, materials, j, x, y, f);

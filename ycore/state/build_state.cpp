@@ -101,7 +101,7 @@ State build_state(const MeshInput& mesh, const Deck& deck) {
       const EdgeSide other = es[1];
       const auto properties = joint_properties(s.triangles.material[t], s.triangles.material[other.triangle]);
       if (!properties) continue;  // two materials that meet through contact alone
-      s.joints.material.push_back(*properties);
+      s.joints.law.push_back(*properties);
       s.joints.node.insert(s.joints.node.end(),
                            {corner_node(t, e), corner_node(t, (e + 1) % 3),
                             corner_node(other.triangle, other.edge),

@@ -16,7 +16,7 @@ MeshInput load_mesh(const Deck& deck);
 
 // Explodes the mesh: 3 nodes per triangle, joints on every interior edge inside a material
 // and on every edge of a bonded interface (deck.interfaces; none between two other materials:
-// those are separate bodies), each with its properties' index (Joints::material), named
+// those are separate bodies), each with its properties' index (Joints::law), named
 // boundary edges as node pairs. Moisture nodes are left to ycrack and ymoist.
 State build_state(const MeshInput& mesh, const Deck& deck);
 

@@ -82,10 +82,10 @@ struct Joints {
   // [4 * joints]: edge a-b of the first triangle (CCW), then b'-a' of the second, so that
   // node 4j+0 meets 4j+3 and 4j+1 meets 4j+2.
   std::vector<index_t> node;
-  // [joints] its properties, an index into State::materials: the material of both its
-  // triangles, or, from State::material_names.size() on, a bonded interface's
-  // (State::interface_names; is_interface_joint).
-  std::vector<std::uint16_t> material;
+  // [joints] the properties of its cohesive law, an index into State::materials: those of
+  // the material of both its triangles, or, from State::material_names.size() on, a bonded
+  // interface's (State::interface_names; is_interface_joint).
+  std::vector<std::uint16_t> law;
   std::vector<double> length0;          // [joints] initial length, m
   std::vector<double> strength_factor;  // [joints] multiplies the material's tensile strength
                                         // and cohesion (strength_heterogeneity; 1 without)
@@ -269,9 +269,9 @@ struct State {
 };
 
 // Whether joint j ties two materials (a bonded interface's) rather than the triangles of one:
-// its property index lies past the `materials` materials' (Joints::material).
+// its property index lies past the `materials` materials' (Joints::law).
 inline bool is_interface_joint(const Joints& joints, std::size_t materials, std::size_t j) {
-  return joints.material[j] >= materials;
+  return joints.law[j] >= materials;
 }
 inline bool is_interface_joint(const State& s, std::size_t j) { return is_interface_joint(s.joints, s.material_names.size(), j); }
 
