@@ -76,14 +76,14 @@ TEST_CASE("strength factors belong to the mesh edge, not to the joint's place in
   Joints& jt = s.joints;
   const std::size_t nj = jt.size();
   std::vector<index_t> node(4 * nj);
-  std::vector<std::uint16_t> material(nj);
+  std::vector<std::uint16_t> law(nj);
   for (std::size_t j = 0; j < nj; ++j) {
     const std::size_t from = nj - 1 - j;
     for (int k = 0; k < 4; ++k) node[4 * j + k] = jt.node[4 * from + (k + 2) % 4];
-    material[j] = jt.law[from];
+    law[j] = jt.law[from];
   }
   jt.node = node;
-  jt.law = material;
+  jt.law = law;
   set_strength_factors(jt, s.nodes, s.materials, 11);
   CHECK(factor_by_edge(s) == before);
 }
