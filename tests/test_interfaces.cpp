@@ -79,6 +79,46 @@ std::pair<index_t, index_t> joint_edge(const State& s, std::size_t j) {
   return std::minmax(s.nodes.vertex[s.joints.node[4 * j]], s.nodes.vertex[s.joints.node[4 * j + 1]]);
 }
 
+// The rectangle of the two tests below, base (E 16 MPa) under soil (E 4 MPa), both elastic with
+// nu = 0 and unbreakable, without gravity, bonded by kBonded's interface and loaded as `sets`
+// say, run one coupling second at a time to its end. Returns the peak of the top's reaction
+// along `axis` (0 x, 1 y) and, at that peak, the mean move along it of the base's corners on
+// the interface (y = 0.5 m), with the deck and the state at the end.
+struct RectangleRun {
+  Deck deck;
+  State state;
+  double peak_reaction = 0, base_top_move = 0;
+};
+RectangleRun run_bonded_rectangle(TempDir& dir, const std::vector<std::string>& sets, int axis) {
+  std::vector<std::string> all = {kBonded[0], "run.gravity=[0.0, 0.0]", "solver.max_coupling_step=1.0",
+                                  "materials.soil.young=4.0e6", "materials.soil.poisson=0.0",
+                                  "materials.soil.breakable=false", "materials.base.young=1.6e7",
+                                  "materials.base.poisson=0.0"};
+  all.insert(all.end(), sets.begin(), sets.end());
+  RectangleRun run{soil_on_base(dir, all), {}};
+  run.state = setup_state(run.deck);
+  State& s = run.state;
+  const auto top = std::find_if(s.mechanics_boundaries.begin(), s.mechanics_boundaries.end(),
+                                [](const MechanicsBoundary& b) { return b.name == "top"; });
+  REQUIRE(top != s.mechanics_boundaries.end());
+  const std::uint16_t base = material_id(s, "base");
+  const auto base_top_move = [&] {
+    double sum = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (s.triangles.material[triangle_of(index_t(i))] == base && std::fabs(s.nodes.y0[i] - 0.5) < 1e-9)
+        sum += axis == 0 ? s.nodes.x[i] - s.nodes.x0[i] : s.nodes.y[i] - s.nodes.y0[i], ++count;
+    return sum / count;
+  };
+  double step_limit = coupling_step_limit(s, run.deck);
+  for (double t = 1.0; t <= run.deck.end_time_s; t += 1.0) {
+    step_limit = advance_to(s, run.deck, t, step_limit);
+    const double reaction = axis == 0 ? top->reaction_x : top->reaction_y;
+    if (reaction > run.peak_reaction) run.peak_reaction = reaction, run.base_top_move = base_top_move();
+  }
+  return run;
+}
+
 }  // namespace
 
 TEST_CASE("an [interfaces.A_B] table is read in either order, with its defaults", "[interfaces]") {
@@ -315,43 +355,51 @@ TEST_CASE("log.txt names each bonded interface with its joints and properties", 
 
 TEST_CASE("an interface between two deformable materials opens at its strength and dissipates its gf_I",
           "[interfaces]") {
-  // The 2 x 1 m rectangle, base under soil, both elastic (E 16 and 4 MPa, nu = 0) and
-  // unbreakable, held at the bottom and pulled up at the top: a uniaxial stress, the same in
-  // both layers and on the whole interface, whose joints open as one cohesive crack of area
-  // A = 2 m x 1 m. So the top's reaction peaks at f_t A, the broken joints' work is gf_I A,
-  // and at the peak the base's top has risen by (sigma / E_base) x 0.5 m. (f_t and gf_I are
-  // kBonded's.)
+  // Held at the bottom and pulled up at the top: a uniaxial stress, the same in both layers and
+  // on the whole interface, whose joints open as one cohesive crack of area A = 2 m x 1 m. So
+  // the top's reaction peaks at f_t A, the broken joints' work is gf_I A, and at the peak the
+  // base's top has risen by (sigma / E_base) x 0.5 m. (f_t and gf_I are kBonded's.)
   TempDir dir;
-  const Deck deck = soil_on_base(
-      dir, {kBonded[0], "run.gravity=[0.0, 0.0]", "run.end_time=250.0", "solver.max_coupling_step=1.0",
-            "materials.soil.young=4.0e6", "materials.soil.poisson=0.0", "materials.soil.breakable=false",
-            "materials.base.young=1.6e7", "materials.base.poisson=0.0",
-            "mechanics.boundary=[{on=\"bottom\", fix=[\"x\", \"y\"]}, {on=\"top\", velocity=[0.0, 1.0e-5]}]"});
-  State s = setup_state(deck);
-  const auto top = std::find_if(s.mechanics_boundaries.begin(), s.mechanics_boundaries.end(),
-                                [](const MechanicsBoundary& b) { return b.name == "top"; });
-  REQUIRE(top != s.mechanics_boundaries.end());
-  const std::uint16_t base = material_id(s, "base");
-  const auto base_top_rise = [&] {  // mean over the base's corners on the interface
-    double sum = 0;
-    int count = 0;
-    for (std::size_t i = 0; i < s.nodes.size(); ++i)
-      if (s.triangles.material[triangle_of(index_t(i))] == base && std::fabs(s.nodes.y0[i] - 0.5) < 1e-9)
-        sum += s.nodes.y[i] - s.nodes.y0[i], ++count;
-    return sum / count;
-  };
-  const double area = 2.0 * deck.thickness_m, strength = 2.0e3, gf_I = 1.0;
-  const double base_young = *deck.materials.at("base").young;
-  double peak = 0, rise_at_peak = 0, step_limit = coupling_step_limit(s, deck);
-  for (double t = 1.0; t <= deck.end_time_s; t += 1.0) {
-    step_limit = advance_to(s, deck, t, step_limit);
-    if (top->reaction_y > peak) peak = top->reaction_y, rise_at_peak = base_top_rise();
-  }
+  const RectangleRun run = run_bonded_rectangle(
+      dir,
+      {"run.end_time=250.0",
+       "mechanics.boundary=[{on=\"bottom\", fix=[\"x\", \"y\"]}, {on=\"top\", velocity=[0.0, 1.0e-5]}]"},
+      1);
+  const State& s = run.state;
+  const double area = 2.0 * run.deck.thickness_m, strength = 2.0e3, gf_I = 1.0;
   CHECK(s.mechanics.capped_relaxations == 0);
-  CHECK(peak / area == Approx(strength).epsilon(0.02));
-  CHECK(rise_at_peak == Approx(peak / area / base_young * 0.5).epsilon(0.02));
+  CHECK(run.peak_reaction / area == Approx(strength).epsilon(0.02));
+  const double base_young = *run.deck.materials.at("base").young;
+  CHECK(run.base_top_move == Approx(run.peak_reaction / area / base_young * 0.5).epsilon(0.02));
   const std::vector<double> debonded = interface_debonded_lengths(s);
   REQUIRE(debonded.size() == 1);
   CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
   CHECK(energies(s).fracture_J / area == Approx(gf_I).epsilon(0.02));
+}
+
+TEST_CASE("an interface between two deformable materials slips at its cohesion and dissipates its gf_II",
+          "[interfaces]") {
+  // The top pushed along x and every outer side held in y: the held sides carry the
+  // complementary shear, so the stress is a simple shear tau, the same in both layers and on
+  // the whole interface, whose joints slide as one cohesive crack of area A. So the top's
+  // reaction peaks at c A, the broken joints' work is gf_II A and, at the peak, the base's top
+  // has moved by (tau / G_base) x 0.5 m, G = E / 2 at nu = 0. The friction angle is 0, so that
+  // the strength is c whatever the normal stress the shear's rotation brings
+  // (verification/interface_debonding/README.md, the shear run).
+  TempDir dir;
+  const RectangleRun run = run_bonded_rectangle(
+      dir, {"interfaces.base_soil.friction_angle=0.0", "run.end_time=700.0",
+            "mechanics.boundary=[{on=\"outer\", fix=[\"y\"]}, {on=\"bottom\", fix=[\"x\", \"y\"]}, "
+            "{on=\"top\", velocity=[1.0e-5, 0.0]}]"},
+      0);
+  const State& s = run.state;
+  const double area = 2.0 * run.deck.thickness_m, cohesion = 3.0e3, gf_II = 2.0;
+  CHECK(s.mechanics.capped_relaxations == 0);
+  CHECK(run.peak_reaction / area == Approx(cohesion).epsilon(0.02));
+  const double base_shear_modulus = *run.deck.materials.at("base").young / 2.0;
+  CHECK(run.base_top_move == Approx(run.peak_reaction / area / base_shear_modulus * 0.5).epsilon(0.02));
+  const std::vector<double> debonded = interface_debonded_lengths(s);
+  REQUIRE(debonded.size() == 1);
+  CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
+  CHECK(energies(s).fracture_J / area == Approx(gf_II).epsilon(0.02));
 }
