@@ -9,7 +9,7 @@ SWEEPS_OUT ?= runs/sweeps
 SWEEPS   ?= inputs/sweeps/young.toml inputs/sweeps/alpha.toml inputs/sweeps/thickness.toml
 ROBUSTNESS_OUT ?= runs/robustness
 ROBUSTNESS ?= verification/peron/robustness/seed.toml verification/peron/robustness/relaxation.toml \
-              verification/peron/robustness/mesh.toml
+              verification/peron/robustness/penalty.toml verification/peron/robustness/mesh.toml
 THREADS  ?=
 # Test time on CI: ctest runs its cases on every core.
 CTEST_FLAGS ?= --output-on-failure -j $(JOBS)
@@ -61,10 +61,10 @@ sweeps: build
 	$(PYTHON) scripts/plot_sweep.py $(SWEEPS_OUT) --out $(SWEEPS_OUT)/plots
 
 # The Peron figures' robustness (verification/peron/README.md "Robustness"): the shipped
-# deck, three heterogeneity seeds, the relaxation cap doubled and the element size halved
-# (its mesh made by gmsh), JOBS at a time, then the verdicts against the shipped run. About 3
-# hours of one core (80 minutes on two); run it again after an interruption: runs go on from
-# their checkpoints.
+# deck, three heterogeneity seeds, the relaxation tolerance ten times tighter, the penalties ten
+# times stiffer and the element size halved (its mesh made by gmsh), JOBS at a time, then the
+# verdicts against the shipped run. Several hours of one core; run it again after an
+# interruption: runs go on from their checkpoints.
 inputs/peron/peron_fine.msh: inputs/peron/peron.geo
 	gmsh -2 -format msh41 -setnumber h 0.00075 -o $@ $< > $@.log
 	@! grep -q Error $@.log || (cat $@.log; rm -f $@; exit 1)

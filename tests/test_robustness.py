@@ -29,7 +29,7 @@ HETEROGENEITY = "materials.soil.strength_heterogeneity=0.05"
 VARIANTS = {"seed_1": (["run.seed=1", HETEROGENEITY], (True, 8, 1.0999 * WIDTH)),
             "seed_2": (["run.seed=2", HETEROGENEITY], (True, 5, 0.85 * WIDTH)),
             "seed_3": (["run.seed=3", HETEROGENEITY], (False, 7, WIDTH)),
-            "relaxation_cap_10080": (["solver.relaxation_max_steps=10080"], None)}
+            "relaxation_tolerance_1e-06": (["solver.relaxation_tolerance=1e-06"], None)}
 EXPECTED = {
     "seed_1_completed true true PASS", "seed_1_surface_crack_count_change 1 +-1 PASS",
     "seed_1_mean_surface_width_rel_change 0.0999 0.1 PASS",
@@ -37,7 +37,7 @@ EXPECTED = {
     "seed_2_mean_surface_width_rel_change 0.15 0.1 FAIL",
     "seed_3_completed false true FAIL", "seed_3_surface_crack_count_change 0 +-1 PASS",
     "seed_3_mean_surface_width_rel_change 0 0.1 PASS",
-    "relaxation_cap_10080_completed false true FAIL",
+    "relaxation_tolerance_1e-06_completed false true FAIL",
 }
 
 
@@ -68,7 +68,7 @@ def main():
         out = Path(tmp)
         subprocess.run([sys.executable, str(REPO / "scripts" / "sweep.py"), *map(str, STUDIES), "--out", str(out),
                         "--ydry", str(args.ydry), "--slurm-only"], check=True, capture_output=True)
-        reference = out / "relaxation_cap_5040"
+        reference = out / "relaxation_tolerance_1e-05"
         reference.mkdir()
         (reference / "deck.toml").write_text(resolved(args.ydry, []))
         (reference / "summary.json").write_text(json.dumps(summary(False, 7, WIDTH)))

@@ -5,10 +5,10 @@ count within +-1 and its mean final width within 10 %?
 Reads a folder that `make robustness` (scripts/sweep.py on verification/peron/robustness/*.toml)
 filled: OUT/sweep.json names the runs. The reference is the run whose deck.toml is the shipped
 deck inputs/peron/peron.toml as `ydry check` resolves it, every value alike (defaults included;
-the mesh compared by its contents), the run the relaxation and mesh studies share; every other
-run is a variant: three seeds of a 5 % strength
-heterogeneity, the relaxation cap doubled, the element size halved. Each variant's
-surface_crack_count and mean_surface_crack_width_m (summary.json, the figures the experiment
+the mesh compared by its contents), the run the relaxation, penalty and mesh studies share;
+every other run is a variant: three seeds of a 5 % strength heterogeneity, the relaxation
+tolerance ten times tighter, the penalties ten times stiffer, the element size halved. Each
+variant's surface_crack_count and mean_surface_crack_width_m (summary.json, the figures the experiment
 measures) are compared with the reference's, and printed beside the experiment's (7 cracks,
 0.836 mm), with the sum of the top surface's gaps (the shrinkage the cracks take up, whichever
 cracks count). A variant not yet completed is shown at the time it reached and fails `completed`.
