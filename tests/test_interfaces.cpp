@@ -119,6 +119,22 @@ RectangleRun run_bonded_rectangle(TempDir& dir, const std::vector<std::string>& 
   return run;
 }
 
+// What a run of the rectangle must show when its whole interface opens or slides as one
+// cohesive crack of area A = 2 m x 1 m: no relaxation capped, the top's reaction peaking at
+// strength x A, the base's top moved at that peak by (peak / A) / modulus x 0.5 m (the base's
+// E in tension, G in shear), all 2 m debonded, and the broken joints' work gf x A; each
+// within 2 %.
+void check_one_cohesive_crack(const RectangleRun& run, double strength, double gf, double modulus) {
+  const double area = 2.0 * run.deck.thickness_m;
+  CHECK(run.state.mechanics.capped_relaxations == 0);
+  CHECK(run.peak_reaction / area == Approx(strength).epsilon(0.02));
+  CHECK(run.base_top_move == Approx(run.peak_reaction / area / modulus * 0.5).epsilon(0.02));
+  const std::vector<double> debonded = interface_debonded_lengths(run.state);
+  REQUIRE(debonded.size() == 1);
+  CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
+  CHECK(energies(run.state).fracture_J / area == Approx(gf).epsilon(0.02));
+}
+
 }  // namespace
 
 TEST_CASE("an [interfaces.A_B] table is read in either order, with its defaults", "[interfaces]") {
@@ -365,16 +381,7 @@ TEST_CASE("an interface between two deformable materials opens at its strength a
       {"run.end_time=250.0",
        "mechanics.boundary=[{on=\"bottom\", fix=[\"x\", \"y\"]}, {on=\"top\", velocity=[0.0, 1.0e-5]}]"},
       1);
-  const State& s = run.state;
-  const double area = 2.0 * run.deck.thickness_m, strength = 2.0e3, gf_I = 1.0;
-  CHECK(s.mechanics.capped_relaxations == 0);
-  CHECK(run.peak_reaction / area == Approx(strength).epsilon(0.02));
-  const double base_young = *run.deck.materials.at("base").young;
-  CHECK(run.base_top_move == Approx(run.peak_reaction / area / base_young * 0.5).epsilon(0.02));
-  const std::vector<double> debonded = interface_debonded_lengths(s);
-  REQUIRE(debonded.size() == 1);
-  CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
-  CHECK(energies(s).fracture_J / area == Approx(gf_I).epsilon(0.02));
+  check_one_cohesive_crack(run, 2.0e3, 1.0, *run.deck.materials.at("base").young);
 }
 
 TEST_CASE("an interface between two deformable materials slips at its cohesion and dissipates its gf_II",
@@ -392,14 +399,5 @@ TEST_CASE("an interface between two deformable materials slips at its cohesion a
             "mechanics.boundary=[{on=\"outer\", fix=[\"y\"]}, {on=\"bottom\", fix=[\"x\", \"y\"]}, "
             "{on=\"top\", velocity=[1.0e-5, 0.0]}]"},
       0);
-  const State& s = run.state;
-  const double area = 2.0 * run.deck.thickness_m, cohesion = 3.0e3, gf_II = 2.0;
-  CHECK(s.mechanics.capped_relaxations == 0);
-  CHECK(run.peak_reaction / area == Approx(cohesion).epsilon(0.02));
-  const double base_shear_modulus = *run.deck.materials.at("base").young / 2.0;
-  CHECK(run.base_top_move == Approx(run.peak_reaction / area / base_shear_modulus * 0.5).epsilon(0.02));
-  const std::vector<double> debonded = interface_debonded_lengths(s);
-  REQUIRE(debonded.size() == 1);
-  CHECK(debonded[0] == Approx(2.0).epsilon(1e-9));  // all of it
-  CHECK(energies(s).fracture_J / area == Approx(gf_II).epsilon(0.02));
+  check_one_cohesive_crack(run, 3.0e3, 2.0, *run.deck.materials.at("base").young / 2.0);
 }
