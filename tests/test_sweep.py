@@ -19,8 +19,8 @@ A sweep file over run.end_time = 1000, 2000, 10000 and 16000 s of tests/data/swe
    strip_1000 is made the run of another deck (its deck.toml's end time changed): plot_sweep.py
    must not take it for the second sweep's 1000 s value any more.
 And the shipped sweeps, inputs/sweeps/*.toml, planned without running (--slurm-only: every
-deck and override checked by ydry): 14 runs for their 15 values (E = 4 MPa and alpha = 0.08 are
-one). Exits 1 on any failure.
+deck and override checked by ydry): 16 runs for their 18 values (E = 4 MPa of young.toml and
+young_cohesive_length.toml and alpha = 0.08 are one deck). Exits 1 on any failure.
 """
 import json
 import os
@@ -196,8 +196,8 @@ def main():
                                str(Path(tmp) / "shipped"), "--ydry", str(args.ydry), "--slurm-only"],
                               capture_output=True, text=True)
         print(proc.stdout + proc.stderr)
-        if proc.returncode != 0 or "14 runs for 15 values" not in proc.stdout:
-            failures.append(f"the shipped sweeps {[path.name for path in shipped]} do not plan as 14 runs for 15 values")
+        if proc.returncode != 0 or "16 runs for 18 values" not in proc.stdout:
+            failures.append(f"the shipped sweeps {[path.name for path in shipped]} do not plan as 16 runs for 18 values")
     return ydry_case.failed(failures)
 
 
