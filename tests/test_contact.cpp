@@ -285,10 +285,33 @@ TEST_CASE("a block carried off its rest by the extrapolated start is pulled back
       if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
     const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method}, kCouplingStep);
     REQUIRE_FALSE(result.capped);
+    CHECK(s.mechanics.friction_slide_relaxations == rest.mechanics.friction_slide_relaxations);
     double farthest = 0.0;
     for (std::size_t i = 0; i < s.nodes.size(); ++i)
       farthest = std::max(farthest, std::fabs(s.nodes.x[i] - rest.nodes.x[i]));
     CHECK(farthest < 1e-3 * kCarry);
+  }
+}
+
+// The same carried block with solver.relaxation_slide_after = 1 (doc/solver.md "Friction that
+// stalls"): from the first pseudo-step the friction slides at every step, so nothing pulls the
+// block back and it stays nearly the whole carry away; the relaxation is counted.
+TEST_CASE("a relaxation past solver.relaxation_slide_after lets the friction slide at every step, and is counted",
+          "[contact][mechanics]") {
+  const State rest = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  constexpr double kCarry = 1e-4, kCouplingStep = 1.0;  // m, s
+  for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire}) {
+    INFO("relaxation " << (method == RelaxationMethod::fire ? "fire" : "viscous"));
+    State s = rest;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (!(s.nodes.constraint[i] & kFixX)) s.nodes.vx[i] = kCarry / kCouplingStep;
+    const RelaxationResult result = relax(s, RelaxationControls{1e-9, 200000, method, 1}, kCouplingStep);
+    REQUIRE_FALSE(result.capped);
+    CHECK(s.mechanics.friction_slide_relaxations == rest.mechanics.friction_slide_relaxations + 1);
+    double nearest = kCarry;
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      if (!(s.nodes.constraint[i] & kFixX)) nearest = std::min(nearest, s.nodes.x[i] - rest.nodes.x[i]);
+    CHECK(nearest > 0.99 * kCarry);
   }
 }
 

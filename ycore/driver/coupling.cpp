@@ -51,7 +51,7 @@ bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
   if (deck.dynamic)
     move_dynamically(s, dt);
   else
-    relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation}, dt);
+    relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation, deck.relaxation_slide_after}, dt);
   StageClock cracking;
   const bool broke = commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
   if (broke) split_across_broken_joints(s, deck);

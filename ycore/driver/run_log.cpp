@@ -109,7 +109,9 @@ void log_end(Log& log, const State& state, const Deck& deck, double wall_s, cons
          << e.kinetic_J << "\n";
     if (!deck.dynamic) {
       tail << "equilibria: " << state.mechanics.capped_relaxations << " relaxation(s) stopped at the step cap, worst "
-           << "residual " << state.mechanics.worst_residual;
+           << "residual " << state.mechanics.worst_residual << ", " << state.mechanics.friction_slide_relaxations
+           << " with the friction sliding at every step after solver.relaxation_slide_after = "
+           << deck.relaxation_slide_after << " steps";
       if (deck.relaxation == RelaxationMethod::newton)
         tail << ", " << state.mechanics.newton_fallbacks << " Newton relaxation(s) finished by FIRE";
       tail << "\n";

@@ -81,6 +81,7 @@ JsonObject summary_json(const Deck& deck, const State& s, const Series& series, 
   if (deck.mechanics && !deck.dynamic) {  // how well the equilibria converged
     j.integer("capped_relaxations", static_cast<long long>(s.mechanics.capped_relaxations));
     j.number("worst_relaxation_residual", s.mechanics.worst_residual);
+    j.integer("friction_slide_relaxations", static_cast<long long>(s.mechanics.friction_slide_relaxations));
   }
   if (deck.relaxation == RelaxationMethod::newton)
     j.integer("newton_fallbacks", static_cast<long long>(s.mechanics.newton_fallbacks));

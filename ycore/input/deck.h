@@ -124,6 +124,7 @@ struct Deck {
   double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
   double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
   std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
+  std::int64_t relaxation_slide_after = 20000; // steps after which the friction slides at every step; 0: never
   bool node_mass_scaling = true;      // quasi-static: nodes stiff for their mass made heavier
   // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood),
   // "fire" (FIRE, Bitzek et al. 2006; ycore/solid/relaxation.cpp) or "newton" (Newton on the

@@ -15,7 +15,8 @@ namespace {
 
 // Totals added to the state after checkpoint format 1 was first written: a checkpoint without
 // one (written before) restores it as 0, its value until the code that counts it ran.
-const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual"};
+const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual",
+                                                     "mechanics.friction_slide_relaxations"};
 
 template <class R, class Field>
 void for_each_record_field(R& r, Field&& field) {

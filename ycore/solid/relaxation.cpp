@@ -209,8 +209,9 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   predict_equilibrium(s.contact, s.ownership, n, coupling_dt, dt);
   move_driven_nodes(mech, n, coupling_dt, dt);
   const bool fire_measures = controls.method != RelaxationMethod::viscous;
-  // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium).
-  const FrictionUpdate friction = FrictionUpdate::at_equilibrium;
+  // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium), until
+  // a relaxation has taken controls.slide_after steps (doc/solver.md "Friction that stalls").
+  FrictionUpdate friction = FrictionUpdate::at_equilibrium;
   ForceMeasures measures = compute_forces(s, dt, friction, fire_measures);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
@@ -235,6 +236,10 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   FireSteering fire(dt);
   double damping = 0.0;
   while (!balanced(measures) && result.steps < controls.max_steps) {
+    if (result.steps == controls.slide_after && friction == FrictionUpdate::at_equilibrium) {
+      friction = FrictionUpdate::every_step;
+      ++mech.friction_slide_relaxations;
+    }
     const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
     measures = compute_forces(s, update.step, friction, fire_measures, &update);
     ++result.steps;

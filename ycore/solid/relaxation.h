@@ -21,6 +21,7 @@ struct RelaxationControls {
   double tolerance = 1e-7;          // out-of-balance force ratio that ends it
   std::int64_t max_steps = 200000;  // step cap
   RelaxationMethod method = RelaxationMethod::viscous;
+  std::int64_t slide_after = 20000;  // steps after which the friction slides at every step; 0: never
 };
 
 struct RelaxationResult {

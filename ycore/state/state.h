@@ -238,6 +238,7 @@ struct Mechanics {
   std::uint64_t steps = 0;                // mechanical steps since t = 0
   std::uint64_t capped_relaxations = 0;   // relaxations stopped by the step cap
   std::uint64_t newton_fallbacks = 0;     // Newton relaxations that FIRE finished
+  std::uint64_t friction_slide_relaxations = 0;  // relaxations whose friction slid at every step
   double worst_residual = 0;              // the largest out-of-balance ratio a relaxation ended
                                           // at, above the round-off floor
   double gravity_work_J = 0;              // work of gravity since t = 0

@@ -44,6 +44,7 @@ void for_each_history_field(S& s, Field&& field) {
   field("mechanics.steps", s.mechanics.steps);
   field("mechanics.capped_relaxations", s.mechanics.capped_relaxations);
   field("mechanics.newton_fallbacks", s.mechanics.newton_fallbacks);
+  field("mechanics.friction_slide_relaxations", s.mechanics.friction_slide_relaxations);
   field("mechanics.worst_residual", s.mechanics.worst_residual);
   field("mechanics.gravity_work_J", s.mechanics.gravity_work_J);
   for (std::size_t b = 0; b < s.mechanics_boundaries.size(); ++b) {
