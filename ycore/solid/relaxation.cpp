@@ -236,7 +236,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   FireSteering fire(dt);
   double damping = 0.0;
   while (!balanced(measures) && result.steps < controls.max_steps) {
-    if (result.steps == controls.slide_after && friction == FrictionUpdate::at_equilibrium) {
+    if (controls.slide_after > 0 && result.steps >= controls.slide_after && friction == FrictionUpdate::at_equilibrium) {
       friction = FrictionUpdate::every_step;
       ++mech.friction_slide_relaxations;
     }
