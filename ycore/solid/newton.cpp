@@ -1,13 +1,10 @@
 #include "ycore/solid/newton.h"
 
-#include <Eigen/SparseCholesky>
-
 #include <algorithm>
 #include <cmath>
 
-#include "ycore/contact/contact_tangent.h"
-#include "ycore/solid/joint_forces.h"
-#include "ycore/solid/tangent.h"
+#include "ycore/solid/joint_work.h"
+#include "ycore/solid/stiffness_model.h"
 
 namespace ydry {
 namespace {
@@ -60,86 +57,6 @@ void move_by(const FreeComponents& free, const Eigen::VectorXd& du, const Undo& 
   }
 }
 
-// The longest move of a node in du: kept within the contact buffer, so that the broad phase,
-// which keeps the pairs within two buffers, sees every surface a step brings a corner to.
-// A node's unknowns are consecutive (free_components numbers them in node order).
-double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
-  double longest2 = 0.0;
-  for (std::size_t u = 0; u < free.size();) {
-    const index_t node = free.component[u] / 2;
-    double move2 = 0.0;
-    for (; u < free.size() && free.component[u] / 2 == node; ++u) move2 += du[Eigen::Index(u)] * du[Eigen::Index(u)];
-    longest2 = std::max(longest2, move2);
-  }
-  return std::sqrt(longest2);
-}
-
-// The work done on each intact joint of a material with mechanics along the straight path of
-// its nodes from (x_from, y_from) to where they are, by 8-point Gauss-Legendre quadrature of
-// the joint's forces (its committed damage held): the joints' work booked between equilibria.
-void book_joint_work(const Nodes& n, const Mechanics& mech, const std::vector<MaterialModel>& materials,
-                     const std::vector<double>& x_from, const std::vector<double>& y_from, Joints& jt) {
-  static constexpr double kPoint[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
-                                       0.4082826787521751, 0.5917173212478249, 0.7627662049581645,
-                                       0.8983332387068134, 0.9801449282487681};
-  static constexpr double kWeight[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436,
-                                        0.1813418916891810, 0.1813418916891810, 0.1568533229389436,
-                                        0.1111905172266872, 0.0506142681451881};
-#pragma omp parallel for schedule(static) if (jt.size() > parallel_minimum)
-  for (std::size_t j = 0; j < jt.size(); ++j) {
-    if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
-    const index_t* node = &jt.node[4 * j];
-    double dx[4], dy[4], x[4], y[4], f[8], work = 0.0;
-    for (int k = 0; k < 4; ++k) dx[k] = n.x[node[k]] - x_from[node[k]], dy[k] = n.y[node[k]] - y_from[node[k]];
-    for (int q = 0; q < 8; ++q) {
-      for (int k = 0; k < 4; ++k) x[k] = x_from[node[k]] + kPoint[q] * dx[k], y[k] = y_from[node[k]] + kPoint[q] * dy[k];
-      joint_nodal_forces_at(jt, mech, materials, j, x, y, f);
-      double power = 0.0;
-      for (int k = 0; k < 4; ++k) power += f[2 * k] * dx[k] + f[2 * k + 1] * dy[k];
-      work -= kWeight[q] * power;
-    }
-    jt.work[j] += work;
-  }
-}
-
-using Solver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
-
-// The sparsity pattern the solver's ordering and symbolic factorisation were made for.
-struct Pattern {
-  std::vector<int> outer, inner;
-};
-void analyse_if_new(const Eigen::SparseMatrix<double>& A, Pattern& analysed, Solver& solver) {
-  const auto same = [](const std::vector<int>& kept, const int* now, Eigen::Index size) {
-    return kept.size() == std::size_t(size) && std::equal(kept.begin(), kept.end(), now);
-  };
-  if (same(analysed.outer, A.outerIndexPtr(), A.outerSize() + 1) && same(analysed.inner, A.innerIndexPtr(), A.nonZeros()))
-    return;
-  solver.analyzePattern(A);
-  analysed.outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-  analysed.inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-}
-
-Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
-  Eigen::VectorXd f(Eigen::Index(free.size()));
-  for (std::size_t u = 0; u < free.size(); ++u) {
-    const index_t c = free.component[u];
-    f[Eigen::Index(u)] = c % 2 == 0 ? n.fx[c / 2] : n.fy[c / 2];
-  }
-  return f;
-}
-
-
-// K_solid plus the links' stiffness (explicit zeros for the inactive: one pattern for all).
-Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
-                                          const std::vector<std::uint8_t>& active, const FreeComponents& free) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(72 * links.size());  // two 6 x 6 blocks a link
-  add_link_stiffness(links, active, free.unknown, entries);
-  Eigen::SparseMatrix<double> K(K_solid.rows(), K_solid.cols());
-  K.setFromTriplets(entries.begin(), entries.end());
-  return K_solid + K;
-}
-
 // The free components' mass and the trust region's unit (mean diag K / diag M).
 struct Metric {
   Eigen::VectorXd mass;
@@ -151,7 +68,7 @@ struct Metric {
 // active set). Empty where K_solid + links + mu M is not positive definite.
 Eigen::VectorXd model_step(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
                            const FreeComponents& free, const Eigen::VectorXd& f, const Metric& metric, double mu,
-                           std::vector<std::uint8_t>& active, Solver& solver, NewtonOutcome& out) {
+                           std::vector<std::uint8_t>& active, StiffnessSolver& solver, NewtonOutcome& out) {
   Eigen::VectorXd du;
   for (int round = 0; round < kMaxActiveSetRounds; ++round) {
     Eigen::SparseMatrix<double> A = model_tangent(K_solid, links, active, free);
@@ -196,8 +113,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   Nodes& n = s.nodes;
   const FreeComponents free = free_components(n, s.triangles, s.materials);
   Metric metric;
-  metric.mass.resize(Eigen::Index(free.size()));
-  for (std::size_t u = 0; u < free.size(); ++u) metric.mass[Eigen::Index(u)] = n.m[free.component[u] / 2];
+  metric.mass = free_masses(free, n);
   const double damping = s.contact.damping_ratio;
   s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
   NewtonOutcome out;
@@ -206,8 +122,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   const auto balanced = [&](const ForceMeasures& m) {
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
-  Solver solver;
-  Pattern pattern;
+  StiffnessSolver solver;
+  StiffnessPattern pattern;
   double mu = kMinMu;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
     // The force passes of the line search book their own stages; the rest is "solve".
@@ -221,7 +137,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
     std::vector<std::uint8_t> active = links_in_contact(links);
     // The pattern is the same whichever links are active; the ordering is found again only
     // when it changes (a joint breaks, a pair comes near).
-    analyse_if_new(model_tangent(K_solid, links, active, free), pattern, solver);
+    pattern.analyse(model_tangent(K_solid, links, active, free), solver);
     model_clock.lap(s.wall.solve);
     bool accepted = false;
     while (!accepted && mu <= kMaxMu && out.iterations < cap) {

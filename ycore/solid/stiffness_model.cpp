@@ -1,0 +1,54 @@
+#include "ycore/solid/stiffness_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ydry {
+
+void StiffnessPattern::analyse(const Eigen::SparseMatrix<double>& A, StiffnessSolver& solver) {
+  const auto same = [](const std::vector<int>& kept, const int* now, Eigen::Index size) {
+    return kept.size() == std::size_t(size) && std::equal(kept.begin(), kept.end(), now);
+  };
+  if (same(outer_, A.outerIndexPtr(), A.outerSize() + 1) && same(inner_, A.innerIndexPtr(), A.nonZeros())) return;
+  solver.analyzePattern(A);
+  outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+  inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+}
+
+Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& n) {
+  Eigen::VectorXd f(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) {
+    const index_t c = free.component[u];
+    f[Eigen::Index(u)] = c % 2 == 0 ? n.fx[c / 2] : n.fy[c / 2];
+  }
+  return f;
+}
+
+Eigen::VectorXd free_masses(const FreeComponents& free, const Nodes& n) {
+  Eigen::VectorXd mass(Eigen::Index(free.size()));
+  for (std::size_t u = 0; u < free.size(); ++u) mass[Eigen::Index(u)] = n.m[free.component[u] / 2];
+  return mass;
+}
+
+Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
+                                          const std::vector<std::uint8_t>& active, const FreeComponents& free) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(72 * links.size());  // two 6 x 6 blocks a link
+  add_link_stiffness(links, active, free.unknown, entries);
+  Eigen::SparseMatrix<double> K(K_solid.rows(), K_solid.cols());
+  K.setFromTriplets(entries.begin(), entries.end());
+  return K_solid + K;
+}
+
+double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
+  double longest2 = 0.0;
+  for (std::size_t u = 0; u < free.size();) {
+    const index_t node = free.component[u] / 2;
+    double move2 = 0.0;
+    for (; u < free.size() && free.component[u] / 2 == node; ++u) move2 += du[Eigen::Index(u)] * du[Eigen::Index(u)];
+    longest2 = std::max(longest2, move2);
+  }
+  return std::sqrt(longest2);
+}
+
+}  // namespace ydry

@@ -1,0 +1,44 @@
+// The linear algebra of the implicit equilibrium solver (newton.cpp; doc/solver.md
+// "Quasi-static equilibrium"): the solid's stiffness with the contact links, its sparse LDL^T
+// factorisation, and the vectors over the free components.
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <cstdint>
+#include <vector>
+
+#include "ycore/contact/contact_tangent.h"
+#include "ycore/solid/tangent.h"
+#include "ycore/state/state.h"
+
+namespace ydry {
+
+using StiffnessSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+// The sparsity pattern a solver's ordering and symbolic factorisation were made for: analyse
+// finds them again only when the pattern changes (a joint breaks, a pair comes near).
+class StiffnessPattern {
+ public:
+  void analyse(const Eigen::SparseMatrix<double>& A, StiffnessSolver& solver);
+
+ private:
+  std::vector<int> outer_, inner_;
+};
+
+// The out-of-balance force of the free components (nodes.fx, fy).
+Eigen::VectorXd out_of_balance(const FreeComponents& free, const Nodes& nodes);
+
+// The free components' masses.
+Eigen::VectorXd free_masses(const FreeComponents& free, const Nodes& nodes);
+
+// K_solid plus the links' stiffness (explicit zeros for the inactive: one pattern for all).
+Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
+                                          const std::vector<std::uint8_t>& active, const FreeComponents& free);
+
+// The longest move of a node in du. A node's unknowns are consecutive (free_components numbers
+// them in node order).
+double longest_move(const FreeComponents& free, const Eigen::VectorXd& du);
+
+}  // namespace ydry
