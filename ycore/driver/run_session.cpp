@@ -166,7 +166,7 @@ bool RunSession::advance_to_row(double row_time_s) {
   return true;
 }
 
-int RunSession::ssurface_edges_interrupted() {
+int RunSession::stop_interrupted() {
   const std::string path = write_checkpoint();
   progress_.finish(state_.time_s, state_.coupling_steps);
   std::ostringstream w;
@@ -178,7 +178,7 @@ int RunSession::ssurface_edges_interrupted() {
   return 130;
 }
 
-int RunSession::ssurface_edges_failed(const NumericalFailure& failure) {
+int RunSession::stop_failed(const NumericalFailure& failure) {
   // The state as it failed, for inspection: a last frame and a row, summary completed = false.
   progress_.finish(state_.time_s, state_.coupling_steps);
   log_.warning(std::string(failure.what()) + "; the state as it failed is the last frame of " + outdir_ + "/" +
@@ -200,13 +200,13 @@ int RunSession::run_to_end() {
   try {
     while (!record_.finished) {
       if (!advance_to_row(std::min(deck_.end_time_s, double(record_.row) * deck_.series_interval_s)))
-        return ssurface_edges_interrupted();
+        return stop_interrupted();
       write_row(state_.time_s >= deck_.end_time_s);
       record_.finished = state_.time_s >= deck_.end_time_s;
       ++record_.row;
     }
   } catch (const NumericalFailure& failure) {
-    return ssurface_edges_failed(failure);
+    return stop_failed(failure);
   }
   finish();
   return 0;

@@ -39,8 +39,8 @@ class RunSession {
   bool advance_to_row(double row_time_s);
   bool checkpoint_due() const;
   std::string write_checkpoint();
-  int ssurface_edges_interrupted();
-  int ssurface_edges_failed(const NumericalFailure& failure);
+  int stop_interrupted();
+  int stop_failed(const NumericalFailure& failure);
   void finish();
 
   const RunOptions& options_;
