@@ -643,15 +643,29 @@ TEST_CASE("a run that runs away exits 3 with the step, the node and the causes, 
 
 TEST_CASE("a non-finite position stops the relaxation with a NumericalFailure naming the node", "[mechanics]") {
   ydry_test::TempDir dir;
-  State s = setup_state(ydry_test::block_deck(dir, "right"));
-  s.nodes.y[4] = std::numeric_limits<double>::quiet_NaN();
-  try {
-    relax(s, RelaxationControls{1e-9, 100}, 1.0);
-    FAIL("relax went on with a NaN position");
-  } catch (const NumericalFailure& failure) {
-    const std::string message = failure.what();
-    CHECK(message.find("node 4 of triangle 1 (material soil") != std::string::npos);
-    CHECK(message.find("non-finite position") != std::string::npos);
-    CHECK(message.find("solver.mechanics_safety") != std::string::npos);
+  const State start = setup_state(ydry_test::block_deck(dir, "right"));
+  for (const RelaxationMethod method : {RelaxationMethod::viscous, RelaxationMethod::fire, RelaxationMethod::newton}) {
+    INFO("relaxation method " << int(method));
+    State s = start;
+    s.nodes.y[4] = std::numeric_limits<double>::quiet_NaN();
+    try {
+      relax(s, RelaxationControls{1e-9, 100, method}, 1.0);
+      FAIL("relax went on with a NaN position");
+    } catch (const NumericalFailure& failure) {
+      const std::string message = failure.what();
+      CHECK(message.find("node 4 of triangle 1 (material soil") != std::string::npos);
+      CHECK(message.find("non-finite position") != std::string::npos);
+      CHECK(message.find("solver.mechanics_safety") != std::string::npos);
+    }
   }
+}
+
+TEST_CASE("a relaxation built without controls runs as a deck that names none", "[mechanics]") {
+  const Deck deck = ydry_test::strip_deck();
+  const RelaxationControls controls;
+  CHECK(controls.method == deck.relaxation);
+  CHECK(controls.method == RelaxationMethod::newton);  // doc/deck.md "[solver]"
+  CHECK(controls.tolerance == deck.relaxation_tolerance);
+  CHECK(controls.max_steps == deck.relaxation_max_steps);
+  CHECK(controls.slide_after == deck.relaxation_slide_after);
 }

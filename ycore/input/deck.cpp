@@ -217,9 +217,9 @@ void read_solver(TableReader r, Deck& d) {
                                   "tables as well, so it would have no effect");
   d.joint_penalty = r.number("joint_penalty", kPositive, 1000.0);
   d.mechanics_safety = r.number("mechanics_safety", Range{0, 1, true, false}, 0.8);
-  d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, 1e-7);
-  d.relaxation_max_steps = r.integer("relaxation_max_steps", 1, 200000);
-  d.relaxation_slide_after = r.integer("relaxation_slide_after", 0, 20000);
+  d.relaxation_tolerance = r.number("relaxation_tolerance", kPositive, RelaxationDefaults::tolerance);
+  d.relaxation_max_steps = r.integer("relaxation_max_steps", 1, RelaxationDefaults::max_steps);
+  d.relaxation_slide_after = r.integer("relaxation_slide_after", 0, RelaxationDefaults::slide_after);
   d.dynamic = r.string("integration", {"quasi_static", "dynamic"}, std::string("quasi_static")) == "dynamic";
   d.node_mass_scaling = r.boolean("node_mass_scaling", !d.dynamic);
   if (d.dynamic && d.node_mass_scaling) r.error("node_mass_scaling", "needs integration = \"quasi_static\": a dynamic run keeps the physical masses");

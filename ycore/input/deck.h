@@ -77,6 +77,15 @@ struct CrackSegmentDeck {
 
 enum class RelaxationMethod { viscous, fire, newton };
 
+// The defaults of the relaxation's [solver] keys (doc/deck.md "[solver]"): the deck reader
+// fills them in and RelaxationControls (ycore/solid/relaxation.h) starts from them.
+struct RelaxationDefaults {
+  static constexpr double tolerance = 1e-7;
+  static constexpr std::int64_t max_steps = 200000;
+  static constexpr std::int64_t slide_after = 20000;
+  static constexpr RelaxationMethod method = RelaxationMethod::newton;
+};
+
 struct Deck {
   std::string path;  // the deck file as given
 
@@ -122,14 +131,14 @@ struct Deck {
   double mechanics_interval_s = 0;    // moisture time between relaxations; 0: every step
   double joint_penalty = 1000.0;      // joint penalty p / E
   double mechanics_safety = 0.8;      // fraction of the explicit mechanical stability limit
-  double relaxation_tolerance = 1e-7; // out-of-balance force ratio that ends a relaxation
-  std::int64_t relaxation_max_steps = 200000;  // step cap of one relaxation
-  std::int64_t relaxation_slide_after = 20000; // steps after which the friction slides at every step; 0: never
+  double relaxation_tolerance = RelaxationDefaults::tolerance;  // out-of-balance force ratio that ends a relaxation
+  std::int64_t relaxation_max_steps = RelaxationDefaults::max_steps;  // step cap of one relaxation
+  std::int64_t relaxation_slide_after = RelaxationDefaults::slide_after;  // steps after which the friction slides at every step; 0: never
   bool node_mass_scaling = true;      // quasi-static: nodes stiff for their mass made heavier
   // Quasi-static relaxation: "viscous" (adaptive mass-proportional damping, Underwood),
   // "fire" (FIRE, Bitzek et al. 2006; ycore/solid/relaxation.cpp) or "newton" (Newton on the
   // out-of-balance force with a trust region, FIRE where it stops; ycore/solid/newton.cpp).
-  RelaxationMethod relaxation = RelaxationMethod::newton;
+  RelaxationMethod relaxation = RelaxationDefaults::method;
   // "dynamic": the solid moves in real time (undamped central differences, velocities kept)
   // instead of relaxing to equilibrium after each coupling step.
   bool dynamic = false;

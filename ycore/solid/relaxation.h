@@ -18,10 +18,10 @@
 namespace ydry {
 
 struct RelaxationControls {
-  double tolerance = 1e-7;          // out-of-balance force ratio that ends it
-  std::int64_t max_steps = 200000;  // step cap
-  RelaxationMethod method = RelaxationMethod::viscous;
-  std::int64_t slide_after = 20000;  // steps after which the friction slides at every step; 0: never
+  double tolerance = RelaxationDefaults::tolerance;         // out-of-balance force ratio that ends it
+  std::int64_t max_steps = RelaxationDefaults::max_steps;  // step cap
+  RelaxationMethod method = RelaxationDefaults::method;
+  std::int64_t slide_after = RelaxationDefaults::slide_after;  // steps after which the friction slides at every step; 0: never
 };
 
 struct RelaxationResult {
