@@ -3,9 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
-#include <limits>
 
 #include "version.h"
 #include "ycore/solid/energies.h"
@@ -35,33 +33,39 @@ std::vector<index_t> right_end_corners(const State& s) {
 
 std::vector<double> series_row(const State& s, const Deck& deck, const std::vector<index_t>& right_end,
                                const std::vector<Crack>& crack_list) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const bool moisture = s.moisture.size() > 0;
-  std::vector<double> row = {s.time_s,
-                             moisture ? mean_moisture(s.moisture) : nan,
-                             moisture ? s.water.initial_kg - total_water_kg(s.moisture) : nan,
-                             moisture ? water_balance_error(s.moisture, s.water) : nan};
-  if (!deck.mechanics) {
-    row.resize(kSeriesColumns.size() + s.interface_names.size(), nan);
-    return row;
+  SeriesValues v;
+  v.time_s = s.time_s;
+  if (s.moisture.size() > 0) {
+    v.mean_moisture = mean_moisture(s.moisture);
+    v.water_lost_kg = s.water.initial_kg - total_water_kg(s.moisture);
+    v.water_balance_error = water_balance_error(s.moisture, s.water);
   }
+  if (!deck.mechanics)
+    return series_csv_row(v, std::vector<double>(s.interface_names.size(), SeriesValues::kNaN));
   const CrackSummary cracks = summarize_cracks(crack_list);
-  double right_end_ux = nan;
+  v.crack_count = double(cracks.count);
+  v.mean_crack_width_m = cracks.mean_width_m;
+  v.total_crack_width_m = cracks.total_width_m;
+  v.mean_crack_length_m = cracks.mean_length_m;
+  v.surface_crack_count = double(cracks.surface_count);
+  v.mean_surface_crack_width_m = cracks.surface_mean_width_m;
+  v.total_surface_crack_width_m = cracks.surface_total_width_m;
   if (!right_end.empty()) {
-    right_end_ux = 0;
-    for (const index_t i : right_end) right_end_ux += (s.nodes.x[i] - s.nodes.x0[i]) / right_end.size();
+    v.right_end_displacement_m = 0;
+    for (const index_t i : right_end) v.right_end_displacement_m += (s.nodes.x[i] - s.nodes.x0[i]) / right_end.size();
   }
   const Energies e = energies(s);
-  const double broken = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
-  row.insert(row.end(), {double(cracks.count), cracks.mean_width_m, cracks.total_width_m, cracks.mean_length_m,
-                         double(cracks.surface_count), cracks.surface_mean_width_m, cracks.surface_total_width_m,
-                         right_end_ux, e.kinetic_J, s.mechanics.last_residual, broken, e.elastic_J,
-                         e.joint_work_J, e.fracture_J, e.contact_work_J, e.external_work_J, e.gravity_work_J,
-                         double(s.mechanics.steps)});
-  const std::vector<double> debonded = interface_debonded_lengths(s);
-  row.insert(row.end(), debonded.begin(), debonded.end());
-  assert(row.size() == kSeriesColumns.size() + s.interface_names.size());  // the values in the columns' order
-  return row;
+  v.kinetic_energy_J = e.kinetic_J;
+  v.relaxation_residual = s.mechanics.last_residual;
+  v.broken_joints = double(std::count(s.joints.broken.begin(), s.joints.broken.end(), 1));
+  v.elastic_energy_J = e.elastic_J;
+  v.joint_work_J = e.joint_work_J;
+  v.fracture_energy_J = e.fracture_J;
+  v.contact_work_J = e.contact_work_J;
+  v.external_work_J = e.external_work_J;
+  v.gravity_work_J = e.gravity_work_J;
+  v.mechanical_steps = double(s.mechanics.steps);
+  return series_csv_row(v, interface_debonded_lengths(s));
 }
 
 JsonObject summary_json(const Deck& deck, const State& s, const Series& series, int closed_cracks, double wall_s,

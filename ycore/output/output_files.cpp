@@ -20,18 +20,43 @@ constexpr const char* kMarker = ".ydry-output";
 
 }  // namespace
 
-const std::vector<std::string> kSeriesColumns = {
-    "time_s", "mean_moisture", "water_lost_kg", "water_balance_error", "crack_count",
-    "mean_crack_width_m", "total_crack_width_m", "mean_crack_length_m", "surface_crack_count",
-    "mean_surface_crack_width_m", "total_surface_crack_width_m",
-    "right_end_displacement_m", "kinetic_energy_J", "relaxation_residual", "broken_joints",
-    "elastic_energy_J", "joint_work_J", "fracture_energy_J", "contact_work_J", "external_work_J",
-    "gravity_work_J", "mechanical_steps"};
+const std::vector<SeriesColumn> kSeriesColumns = {
+    {"time_s", &SeriesValues::time_s},
+    {"mean_moisture", &SeriesValues::mean_moisture},
+    {"water_lost_kg", &SeriesValues::water_lost_kg},
+    {"water_balance_error", &SeriesValues::water_balance_error},
+    {"crack_count", &SeriesValues::crack_count},
+    {"mean_crack_width_m", &SeriesValues::mean_crack_width_m},
+    {"total_crack_width_m", &SeriesValues::total_crack_width_m},
+    {"mean_crack_length_m", &SeriesValues::mean_crack_length_m},
+    {"surface_crack_count", &SeriesValues::surface_crack_count},
+    {"mean_surface_crack_width_m", &SeriesValues::mean_surface_crack_width_m},
+    {"total_surface_crack_width_m", &SeriesValues::total_surface_crack_width_m},
+    {"right_end_displacement_m", &SeriesValues::right_end_displacement_m},
+    {"kinetic_energy_J", &SeriesValues::kinetic_energy_J},
+    {"relaxation_residual", &SeriesValues::relaxation_residual},
+    {"broken_joints", &SeriesValues::broken_joints},
+    {"elastic_energy_J", &SeriesValues::elastic_energy_J},
+    {"joint_work_J", &SeriesValues::joint_work_J},
+    {"fracture_energy_J", &SeriesValues::fracture_energy_J},
+    {"contact_work_J", &SeriesValues::contact_work_J},
+    {"external_work_J", &SeriesValues::external_work_J},
+    {"gravity_work_J", &SeriesValues::gravity_work_J},
+    {"mechanical_steps", &SeriesValues::mechanical_steps}};
 
 std::vector<std::string> series_columns(const std::vector<std::string>& interface_names) {
-  std::vector<std::string> columns = kSeriesColumns;
+  std::vector<std::string> columns;
+  for (const SeriesColumn& column : kSeriesColumns) columns.emplace_back(column.name);
   for (const std::string& name : interface_names) columns.push_back("debonded_length_" + name);
   return columns;
+}
+
+std::vector<double> series_csv_row(const SeriesValues& values, const std::vector<double>& debonded_lengths) {
+  std::vector<double> row;
+  row.reserve(kSeriesColumns.size() + debonded_lengths.size());
+  for (const SeriesColumn& column : kSeriesColumns) row.push_back(values.*column.value);
+  row.insert(row.end(), debonded_lengths.begin(), debonded_lengths.end());
+  return row;
 }
 
 std::string format_double(double v) {
