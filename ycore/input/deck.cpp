@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "ycore/input/input_error.h"
-#include "ycore/state/mesh_rectangle.h"
+#include "ycore/input/mesh_size.h"
 #include "ycore/input/toml_reader.h"
 #include "ycore/input/toml_writer.h"
 

@@ -3,14 +3,13 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
-namespace ydry {
+#include "ycore/input/mesh_size.h"
 
-using index_t = std::uint32_t;  // all mesh indices are 32-bit
+namespace ydry {
 
 // A mesh edge's name: its two vertex ids, the smaller in the high word, so both directions
 // of the edge give the same key.
@@ -28,10 +27,6 @@ struct MeshInput {
   std::size_t vertex_count() const { return vx.size(); }
   std::size_t triangle_count() const { return tri_material.size(); }
 };
-
-// The most triangles a mesh may have: the exploded mesh numbers 3 corners per triangle in
-// 32 bits, the largest index meaning none (kNoIndex).
-constexpr double kMaxTriangles = (std::numeric_limits<index_t>::max() - 1) / 3;
 
 // Makes every triangle counter-clockwise (swaps two corners of clockwise ones) and rejects
 // degenerate triangles and areas too large for a double; run on every MeshInput before use.

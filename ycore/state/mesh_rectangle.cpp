@@ -4,11 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ydry {
+#include "ycore/input/mesh_size.h"
 
-std::array<double, 2> rectangle_cells(double lx, double ly, double element_size) {
-  return {std::max(1.0, std::round(lx / element_size)), std::max(1.0, std::round(ly / element_size))};
-}
+namespace ydry {
 
 MeshInput generate_rectangle(double lx, double ly, double element_size,
                              const std::string& pattern, const std::string& material) {

@@ -1,7 +1,6 @@
 // The built-in mesh: a structured rectangle (mesh.generator = "rectangle").
 #pragma once
 
-#include <array>
 #include <string>
 
 #include "ycore/state/mesh_input.h"
@@ -14,9 +13,5 @@ namespace ydry {
 // (read_deck checks it).
 MeshInput generate_rectangle(double lx, double ly, double element_size,
                              const std::string& pattern, const std::string& material);
-
-// generate_rectangle's cells along x and y, whole numbers as close to element_size as fit; as
-// doubles, so that a deck can be checked against the 32-bit indices before they are made.
-std::array<double, 2> rectangle_cells(double lx, double ly, double element_size);
 
 }  // namespace ydry
