@@ -1,11 +1,12 @@
 // Quasi-static relaxation of the solid (doc/solver.md "Quasi-static equilibrium"; a step of
 // the coupling loop, doc/architecture.md "A coupling step").
 //
-// Explicit central differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v),
-// from the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
-// brought to rest by one of three methods (solver.relaxation):
+// From the equilibrium extrapolated along the last relaxation's motion (predict_equilibrium),
+// the solid is brought to rest by one of the methods of solver.relaxation (the default is the
+// deck's, RelaxationDefaults in ycore/input/deck.h: "newton"). The explicit ones step central
+// differences in pseudo-time (symplectic Euler: v += dt f / m, x += dt v):
 //
-// - "viscous" (default): mass-proportional damping c = 2 omega, omega^2 the Rayleigh quotient
+// - "viscous": mass-proportional damping c = 2 omega, omega^2 the Rayleigh quotient
 //   -v.(f_new - f_old) / (dt v.M v) of the last step's motion (Underwood's adaptive dynamic
 //   relaxation, with the step's velocity in place of the total displacement: a boundary that
 //   moved the solid rigidly does not fool it into no damping). As the fast modes die out the
@@ -22,7 +23,8 @@
 //   The pseudo-step grows by 1.1 a step (after the same 5) up to the stable one and halves
 //   at each restart. It reaches the tolerance in many relaxations where the damping stops
 //   at the cap, in fewer steps.
-// - "newton": Newton iterations on the out-of-balance force (newton.h), FIRE where they stop.
+// - "newton" (default): Newton iterations on the out-of-balance force (newton.h), FIRE where
+//   they stop.
 //
 // Only the equilibrium reached means anything; the path in pseudo-time does not. The state
 // with history is committed from the equilibrium alone: the joints' damage

@@ -31,9 +31,10 @@ struct RelaxationResult {
 };
 
 // One quasi-static step of the solid over `coupling_dt` seconds of the moisture clock:
-// driven nodes move by velocity x coupling_dt, then explicit central-difference steps, damped
-// by adaptive mass-proportional damping or steered by FIRE (controls.method), run until the
-// out-of-balance ratio is below the tolerance. Velocities are left as displacement /
+// driven nodes move by velocity x coupling_dt, then Newton iterations (FIRE where they stop)
+// or explicit central-difference steps, damped by adaptive mass-proportional damping or
+// steered by FIRE (controls.method), run until the out-of-balance ratio is below the
+// tolerance. Velocities are left as displacement /
 // coupling_dt (physical), reactions and boundary and gravity work are booked. Throws
 // NumericalFailure (numerical_failure.h) for a non-finite or runaway solid.
 RelaxationResult relax(State& state, const RelaxationControls& controls, double coupling_dt);
