@@ -224,10 +224,10 @@ void read_solver(TableReader r, Deck& d) {
   d.node_mass_scaling = r.boolean("node_mass_scaling", !d.dynamic);
   if (d.dynamic && d.node_mass_scaling) r.error("node_mass_scaling", "needs integration = \"quasi_static\": a dynamic run keeps the physical masses");
   if (!d.dynamic) {
-    const std::string method = r.string("relaxation", {"viscous", "fire", "newton"}, std::string("newton"));
-    d.relaxation = method == "fire" ? RelaxationMethod::fire
-                   : method == "newton" ? RelaxationMethod::newton
-                                        : RelaxationMethod::viscous;
+    const std::string method = r.string("relaxation", kRelaxationMethodKeys,
+                                        kRelaxationMethodKeys[std::size_t(RelaxationDefaults::method)]);
+    d.relaxation = RelaxationMethod(std::find(kRelaxationMethodKeys.begin(), kRelaxationMethodKeys.end(), method) -
+                                    kRelaxationMethodKeys.begin());
   } else if (r.has("relaxation"))
     r.error("relaxation", "needs integration = \"quasi_static\": a dynamic run does not relax");
   r.finish();

@@ -77,6 +77,9 @@ struct CrackSegmentDeck {
 
 enum class RelaxationMethod { viscous, fire, newton };
 
+// The values of solver.relaxation, in the order of RelaxationMethod.
+inline const std::vector<std::string> kRelaxationMethodKeys = {"viscous", "fire", "newton"};
+
 // The defaults of the relaxation's [solver] keys (doc/deck.md "[solver]"): the deck reader
 // fills them in and RelaxationControls (ycore/solid/relaxation.h) starts from them.
 struct RelaxationDefaults {
