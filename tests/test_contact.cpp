@@ -328,6 +328,31 @@ TEST_CASE("a block whose last motion was a fall is not carried through the rigid
   CHECK(std::fabs(bottom - bottom_at_rest) < 1e-3 * s.contact.buffer_m);
 }
 
+// A relaxation that runs on tells its step count and ratio every kRelaxationReportSteps steps
+// (the progress line shows them), and telling changes nothing: the falling block above, with
+// and without a listener, reaches the same positions bit for bit.
+TEST_CASE("a long relaxation reports its steps and ratio every kRelaxationReportSteps, and the reports change nothing",
+          "[contact][mechanics]") {
+  State quiet = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  for (std::size_t i = 0; i < quiet.nodes.size(); ++i)
+    if (!(quiet.nodes.constraint[i] & kFixY)) quiet.nodes.vy[i] = -0.2;
+  State told = quiet;
+  RelaxationControls controls{1e-9, 200000, RelaxationMethod::fire};
+  const RelaxationResult unreported = relax(quiet, controls, 1.0);
+  std::vector<std::pair<std::int64_t, double>> reports;
+  controls.report = [&](std::int64_t steps, double residual) { reports.emplace_back(steps, residual); };
+  const RelaxationResult reported = relax(told, controls, 1.0);
+  REQUIRE(reported.steps >= 2 * kRelaxationReportSteps);  // long enough to report
+  CHECK(reported.steps == unreported.steps);
+  CHECK(told.nodes.x == quiet.nodes.x);
+  CHECK(told.nodes.y == quiet.nodes.y);
+  REQUIRE(reports.size() == std::size_t(reported.steps / kRelaxationReportSteps));
+  for (std::size_t k = 0; k < reports.size(); ++k) {
+    CHECK(reports[k].first == std::int64_t(k + 1) * kRelaxationReportSteps);
+    CHECK(reports[k].second > controls.tolerance);  // still out of balance when it told
+  }
+}
+
 // The contact kernel skips a corner that clearly_outside finds outside all its edges
 // (contact_forces.cpp, idle_corner), which leaves the forces bit for bit as they were only if
 // project() would have found it outside too (gap > 0, so no touch). Corners on the line of an

@@ -46,12 +46,12 @@ double coupling_step_limit(const State& s, const Deck& deck) {
   return step;
 }
 
-bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
+bool equilibrate_and_break(State& s, const Deck& deck, double dt, const RelaxationReport& report) {
   // The solid's force passes book their own stages.
   if (deck.dynamic)
     move_dynamically(s, dt);
   else
-    relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation, deck.relaxation_slide_after}, dt);
+    relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation, deck.relaxation_slide_after, report}, dt);
   StageClock cracking;
   const bool broke = commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
   if (broke) split_across_broken_joints(s, deck);
@@ -59,7 +59,7 @@ bool equilibrate_and_break(State& s, const Deck& deck, double dt) {
   return broke;
 }
 
-bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
+bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now, const RelaxationReport& report) {
   StageClock clock;
   if (any_moisture(s)) moisture_step(s.nodes, dt, s.moisture_elements, s.moisture, s.water);  // (1) Eqs. 1-17
   clock.lap(s.wall.moisture);
@@ -68,18 +68,19 @@ bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now) {
   if (!relax_now && s.mechanics.unrelaxed_s < deck.mechanics_interval_s) return false;
   update_shrinkage_strain(s.nodes, s.moisture, s.materials, s.triangles);  // (2) Eqs. 18-19
   clock.lap(s.wall.moisture);
-  const bool broke = equilibrate_and_break(s, deck, s.mechanics.unrelaxed_s);  // (3), (4)
+  const bool broke = equilibrate_and_break(s, deck, s.mechanics.unrelaxed_s, report);  // (3), (4)
   s.mechanics.unrelaxed_s = 0.0;
   return broke && any_moisture(s);
 }
 
-double advance_to(State& s, const Deck& deck, double until_s, double max_step_s, const std::function<bool()>& pause) {
+double advance_to(State& s, const Deck& deck, double until_s, double max_step_s, const std::function<bool()>& pause,
+                  const RelaxationReport& report) {
   while (s.time_s < until_s) {
     const double remaining = until_s - s.time_s;
     // The last step lands exactly on until_s (it is never longer than a stable step), and
     // the solid is in equilibrium there.
     const bool last = remaining <= max_step_s;
-    const bool split = coupling_step(s, deck, last ? remaining : max_step_s, last);
+    const bool split = coupling_step(s, deck, last ? remaining : max_step_s, last, report);
     s.time_s = last ? until_s : s.time_s + max_step_s;
     ++s.coupling_steps;
     if (split) max_step_s = std::min(max_step_s, coupling_step_limit(s, deck));  // smaller nodes

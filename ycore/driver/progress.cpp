@@ -26,7 +26,16 @@ double Progress::wall_s() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
-void Progress::update(double time_s, std::uint64_t steps, bool force) {
+void Progress::update(double time_s, std::uint64_t steps, bool force) { print(time_s, steps, force, ""); }
+
+void Progress::relaxing(double time_s, std::uint64_t steps, std::int64_t relaxation_steps, double residual) {
+  char relaxation[96];
+  std::snprintf(relaxation, sizeof relaxation, "  relaxing: step %lld, out-of-balance ratio %.3g",
+                static_cast<long long>(relaxation_steps), residual);
+  print(time_s, steps, false, relaxation);
+}
+
+void Progress::print(double time_s, std::uint64_t steps, bool force, const char* relaxation) {
   if (!enabled) return;
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_printed).count();
@@ -41,9 +50,9 @@ void Progress::update(double time_s, std::uint64_t steps, bool force) {
     format_duration(eta_text, sizeof eta_text, wall * (1.0 - fraction) / done);
   else
     std::snprintf(eta_text, sizeof eta_text, "--:--:--");
-  std::fprintf(stderr, "%st = %.4g / %.4g s (%5.1f%%)  moisture steps %llu  wall %s  ETA %s%s",
+  std::fprintf(stderr, "%st = %.4g / %.4g s (%5.1f%%)  moisture steps %llu  wall %s  ETA %s%s%s",
                terminal ? "\r\033[K" : "", time_s, end_time_s, 100.0 * fraction,
-               static_cast<unsigned long long>(steps), wall_text, eta_text, terminal ? "" : "\n");
+               static_cast<unsigned long long>(steps), wall_text, eta_text, relaxation, terminal ? "" : "\n");
   std::fflush(stderr);
 }
 

@@ -158,7 +158,10 @@ bool RunSession::advance_to_row(double row_time_s) {
     if (!(record_.chunk_until_s > state_.time_s))
       record_.chunk_until_s = std::min(row_time_s, state_.time_s + 1000 * record_.max_step_s);
     record_.max_step_s = advance_to(state_, deck_, record_.chunk_until_s, record_.max_step_s,
-                                    [&] { return interrupt_signal() != 0 || checkpoint_due(); });
+                                    [&] { return interrupt_signal() != 0 || checkpoint_due(); },
+                                    [&](std::int64_t steps, double residual) {
+                                      progress_.relaxing(state_.time_s, state_.coupling_steps, steps, residual);
+                                    });
     progress_.update(state_.time_s, state_.coupling_steps);
     if (interrupt_signal() != 0) return false;
     if (checkpoint_due()) write_checkpoint();

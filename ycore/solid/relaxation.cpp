@@ -249,6 +249,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
     if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
       damping = std::min(2.0 * std::sqrt(measures.rayleigh_numerator / (dt * measures.twice_kinetic)), 2.0 / dt);
     result.residual = measures.ratio();
+    if (controls.report && result.steps % kRelaxationReportSteps == 0 && !balanced(measures))
+      controls.report(result.steps, result.residual);
   }
   result.capped = !balanced(measures);
   // At the round-off floor the ratio measures nothing (a solid at rest has no forces).

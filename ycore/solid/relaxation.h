@@ -11,17 +11,24 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "ycore/input/deck.h"
 #include "ycore/state/state.h"
 
 namespace ydry {
 
+// Told, every kRelaxationReportSteps steps of a relaxation that runs on, its step count and
+// out-of-balance ratio (the progress line says a long relaxation is still at work).
+using RelaxationReport = std::function<void(std::int64_t steps, double residual)>;
+constexpr std::int64_t kRelaxationReportSteps = 1000;
+
 struct RelaxationControls {
   double tolerance = RelaxationDefaults::tolerance;         // out-of-balance force ratio that ends it
   std::int64_t max_steps = RelaxationDefaults::max_steps;  // step cap
   RelaxationMethod method = RelaxationDefaults::method;
   std::int64_t slide_after = RelaxationDefaults::slide_after;  // steps after which the friction slides at every step; 0: never
+  RelaxationReport report = nullptr;  // none: no reports
 };
 
 struct RelaxationResult {
