@@ -119,3 +119,39 @@ TEST_CASE("a cracking run relaxed by Newton ends in a bitwise identical state on
     CHECK(ydry_test::same_bits(values, state[1][name]));
   }
 }
+
+// Newton keeps the matrix of the step that converged (mechanics.chord_*), and the relaxations
+// after it start with chord steps on its factor (doc/solver.md "Quasi-static equilibrium"):
+// the drying block's later relaxations need no new matrix, and reach the equilibrium that a
+// Newton relaxation without the kept factor reaches.
+TEST_CASE("a drying elastic block's later relaxations are served by the factor Newton kept, at the same equilibrium",
+          "[newton]") {
+  const Deck deck = drying_block({});
+  State served = setup_state(deck);
+  const double limit = coupling_step_limit(served, deck);
+  advance_to(served, deck, 500.0, limit);
+  REQUIRE_FALSE(served.mechanics.chord_values.empty());
+  State fresh = served;  // the same state without the kept matrix
+  for (auto* v : {&fresh.mechanics.chord_components, &fresh.mechanics.chord_outer, &fresh.mechanics.chord_inner})
+    v->clear();
+  fresh.mechanics.chord_values.clear();
+  fresh.mechanics.chord_factor.reset();
+  const std::vector<double> kept = served.mechanics.chord_values;
+  const std::uint64_t steps_before = served.coupling_steps;
+  advance_to(served, deck, 2000.0, limit);
+  advance_to(fresh, deck, 2000.0, limit);
+  REQUIRE(served.coupling_steps > steps_before + 10);
+  CHECK(served.mechanics.chord_values == kept);  // no relaxation needed a Newton step
+  for (const State* s : {&served, &fresh}) {
+    CHECK(s->mechanics.newton_fallbacks == 0);
+    CHECK(s->mechanics.capped_relaxations == 0);
+    CHECK(s->mechanics.worst_residual <= 1e-7);
+  }
+  // Both balanced to the tolerance: the displacements agree to 1e-4 of the largest.
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < served.nodes.size(); ++i) {
+    largest = std::max(largest, std::hypot(fresh.nodes.x[i] - fresh.nodes.x0[i], fresh.nodes.y[i] - fresh.nodes.y0[i]));
+    difference = std::max(difference, std::hypot(served.nodes.x[i] - fresh.nodes.x[i], served.nodes.y[i] - fresh.nodes.y[i]));
+  }
+  CHECK(difference <= 1e-4 * largest);
+}

@@ -17,6 +17,10 @@ namespace {
 // one (written before) restores it as 0, its value until the code that counts it ran.
 const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual",
                                                      "mechanics.friction_slide_relaxations"};
+// The Newton chord matrix (state.h, Mechanics): as large as the checkpoint holds, and none in
+// an older one.
+const std::set<std::string> kChordFields = {"mechanics.chord_components", "mechanics.chord_outer",
+                                            "mechanics.chord_inner", "mechanics.chord_values"};
 
 template <class R, class Field>
 void for_each_record_field(R& r, Field&& field) {
@@ -53,6 +57,20 @@ void check_contact_pairs(const State& s, const Checkpoint& checkpoint) {
       throw InputError(checkpoint.source + ": contact pair " + std::to_string(k) + " (corner " + std::to_string(i) + ", edge " +
                        std::to_string(e) + ") is not a surface corner against a surface edge, in order");
   }
+}
+
+// The restored chord matrix must be one: n + 1 column starts from 0 to its entries, rows below
+// n, over n free components of the nodes.
+void check_chord_matrix(const State& s, const Checkpoint& checkpoint) {
+  const Mechanics& m = s.mechanics;
+  const std::size_t n = m.chord_components.size(), entries = m.chord_values.size();
+  bool valid = m.chord_inner.size() == entries && (n == 0 ? m.chord_outer.empty() && entries == 0
+                                                          : m.chord_outer.size() == n + 1 && m.chord_outer.front() == 0 &&
+                                                                m.chord_outer.back() == entries);
+  for (std::size_t k = 1; valid && k < m.chord_outer.size(); ++k) valid = m.chord_outer[k - 1] <= m.chord_outer[k];
+  for (std::size_t k = 0; valid && k < entries; ++k) valid = m.chord_inner[k] < n;
+  for (std::size_t k = 0; valid && k < n; ++k) valid = m.chord_components[k] < 2 * s.nodes.size();
+  if (!valid) throw InputError(checkpoint.source + ": the Newton chord matrix (mechanics.chord_*) is not a matrix over free components");
 }
 
 }  // namespace
@@ -159,6 +177,8 @@ void restore_state(State& s, const Checkpoint& c) {
     if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
       if (kTotalsAddedToFormat1.count(name) && !c.fields.count(name)) return;  // an older checkpoint: 0
       c.take(name, value);
+    } else if (kChordFields.count(name)) {
+      if (c.fields.count(name)) c.take(name, value);
     } else {
       const std::size_t size = value.size();
       c.take(name, value);
@@ -173,6 +193,7 @@ void restore_state(State& s, const Checkpoint& c) {
   require_finite(c, s.nodes.vy, "nodes.vy");
   require_finite(c, s.moisture.w, "moisture.w");
   check_contact_pairs(s, c);
+  check_chord_matrix(s, c);
   if (s.contact.builds > 0) index_contact_pairs(s.nodes, s.ownership, s.contact);  // a broad phase has run: the pairs are current
 }
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "ycore/solid/joint_work.h"
 #include "ycore/solid/stiffness_model.h"
+#include "ycore/state/stage_timing.h"
 
 namespace ydry {
 namespace {
@@ -30,6 +32,11 @@ constexpr int kMaxActiveSetRounds = 8;
 // Rounds in which a link may open as well as close; after them links only close, so that a set
 // that alternates (it can, a penalty's model being no M-matrix) settles.
 constexpr int kOpeningRounds = 3;
+// Chord steps (the factor of the matrix the last Newton relaxation converged with) a relaxation
+// takes first, at most, each to lower the out-of-balance ratio to this share of the last's at
+// least; where one does not, Newton goes on with the tangent of the state reached.
+constexpr int kChordSteps = 8;
+constexpr double kChordContraction = 0.25;
 
 // What a trial step changes beyond the positions, kept to undo a refused one.
 struct Undo {
@@ -65,13 +72,15 @@ struct Metric {
 
 // The step to the minimum of the piecewise-linear model of the forces at mu: the links active
 // where the step closes them, found by solving again until the set holds (a primal-dual
-// active set). Empty where K_solid + links + mu M is not positive definite.
+// active set); A is left the matrix last factorised. Empty where K_solid + links + mu M is not
+// positive definite.
 Eigen::VectorXd model_step(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
                            const FreeComponents& free, const Eigen::VectorXd& f, const Metric& metric, double mu,
-                           std::vector<std::uint8_t>& active, StiffnessSolver& solver, NewtonOutcome& out) {
+                           std::vector<std::uint8_t>& active, StiffnessSolver& solver, Eigen::SparseMatrix<double>& A,
+                           NewtonOutcome& out) {
   Eigen::VectorXd du;
   for (int round = 0; round < kMaxActiveSetRounds; ++round) {
-    Eigen::SparseMatrix<double> A = model_tangent(K_solid, links, active, free);
+    A = model_tangent(K_solid, links, active, free);
     A.diagonal() += mu * metric.scale * metric.mass;
     solver.factorize(A);
     ++out.factorisations;
@@ -106,6 +115,34 @@ bool line_search(State& s, const FreeComponents& free, const Eigen::VectorXd& f,
   return false;
 }
 
+// Chord steps from the current state: du solves the chord matrix's factor against the
+// out-of-balance force, cut back by the line search like a Newton step, while each lowers the
+// ratio to kChordContraction of the last's. True where they reach the tolerance.
+bool chord_steps(State& s, const FreeComponents& free, std::int64_t cap,
+                 const std::function<bool(const ForceMeasures&)>& balanced, NewtonOutcome& out) {
+  Mechanics& mech = s.mechanics;
+  if (mech.chord_values.empty() || mech.chord_components != free.component) return false;
+  StageClock clock;
+  const ChordFactor& factor = chord_factor(mech);
+  clock.lap(s.wall.solve);
+  if (factor.solver.info() != Eigen::Success) return false;
+  for (int k = 0; k < kChordSteps && out.iterations < cap; ++k) {
+    const double ratio = out.measures.ratio();
+    const Eigen::VectorXd f = out_of_balance(free, s.nodes);
+    Eigen::VectorXd du = factor.solver.solve(f);
+    clock.lap(s.wall.solve);
+    if (!(f.dot(du) > 0.0)) return false;
+    const double move = longest_move(free, du);
+    if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
+    const Undo undo(s.nodes, s.joints, s.contact);
+    double step = 1.0;
+    if (!line_search(s, free, f, du, undo, cap, step, out)) return false;
+    if (balanced(out.measures)) return true;
+    if (!(out.measures.ratio() <= kChordContraction * ratio)) return false;
+  }
+  return false;
+}
+
 }  // namespace
 
 NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, const ForceMeasures& start,
@@ -124,7 +161,9 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   };
   StiffnessSolver solver;
   StiffnessPattern pattern;
+  Eigen::SparseMatrix<double> factorised;  // the matrix of the last Newton step
   double mu = kMinMu;
+  out.converged = balanced(out.measures) || chord_steps(s, free, cap, balanced, out);
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
     // The force passes of the line search book their own stages; the rest is "solve".
     StageClock model_clock;
@@ -142,7 +181,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
     bool accepted = false;
     while (!accepted && mu <= kMaxMu && out.iterations < cap) {
       StageClock step_clock;
-      Eigen::VectorXd du = model_step(K_solid, links, free, f, metric, mu, active, solver, out);
+      Eigen::VectorXd du = model_step(K_solid, links, free, f, metric, mu, active, solver, factorised, out);
       step_clock.lap(s.wall.solve);
       if (du.size() == 0 || !(f.dot(du) > 0.0)) {  // not positive definite, or uphill
         mu *= 10.0;
@@ -160,6 +199,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
       break;
     }
   }
+  // A Newton step's matrix that brought the relaxation to its tolerance serves the next ones.
+  if (out.converged && factorised.nonZeros() > 0) keep_chord_matrix(factorised, free, s.mechanics);
   std::fill(n.vx.begin(), n.vx.end(), 0.0);
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
   s.contact.damping_ratio = damping;

@@ -51,4 +51,27 @@ double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
   return std::sqrt(longest2);
 }
 
+ChordFactor& chord_factor(Mechanics& m) {
+  if (!m.chord_factor) m.chord_factor = std::make_shared<ChordFactor>();
+  ChordFactor& held = *m.chord_factor;
+  if (held.values == m.chord_values && held.inner == m.chord_inner && held.outer == m.chord_outer) return held;
+  const Eigen::Index n = Eigen::Index(m.chord_outer.size()) - 1;
+  std::vector<int> outer(m.chord_outer.begin(), m.chord_outer.end()), inner(m.chord_inner.begin(), m.chord_inner.end());
+  const Eigen::Map<const Eigen::SparseMatrix<double>> A(n, n, Eigen::Index(m.chord_values.size()), outer.data(), inner.data(),
+                                                         m.chord_values.data());
+  held.solver.analyzePattern(A);
+  held.solver.factorize(A);
+  held.outer = m.chord_outer, held.inner = m.chord_inner, held.values = m.chord_values;
+  return held;
+}
+
+void keep_chord_matrix(const Eigen::SparseMatrix<double>& matrix, const FreeComponents& free, Mechanics& m) {
+  Eigen::SparseMatrix<double> A = matrix;
+  A.makeCompressed();
+  m.chord_components = free.component;
+  m.chord_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+  m.chord_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  m.chord_values.assign(A.valuePtr(), A.valuePtr() + A.nonZeros());
+}
+
 }  // namespace ydry

@@ -17,6 +17,20 @@ namespace ydry {
 
 using StiffnessSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
 
+// The factor of the chord matrix (mechanics.chord_*), with the matrix it was made from.
+struct ChordFactor {
+  std::vector<index_t> outer, inner;
+  std::vector<double> values;
+  StiffnessSolver solver;
+};
+
+// The chord matrix's factor, made (ordering and all) from mechanics.chord_* where the one held
+// is not theirs: a run restarted from a checkpoint makes the same factor bit for bit.
+ChordFactor& chord_factor(Mechanics& mechanics);
+
+// Keeps A (compressed) over `free` as the chord matrix.
+void keep_chord_matrix(const Eigen::SparseMatrix<double>& A, const FreeComponents& free, Mechanics& mechanics);
+
 // The sparsity pattern a solver's ordering and symbolic factorisation were made for: analyse
 // finds them again only when the pattern changes (a joint breaks, a pair comes near).
 class StiffnessPattern {

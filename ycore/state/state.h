@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -218,6 +219,8 @@ struct Contact {
 };
 
 // The solid's controls, relaxation scratch and energy bookkeeping.
+struct ChordFactor;  // stiffness_model.h
+
 struct Mechanics {
   // constant
   double thickness_m = 1;                 // out-of-plane
@@ -233,6 +236,13 @@ struct Mechanics {
   std::vector<double> x_start, y_start;   // [nodes] positions when the relaxation began
   // history
   double unrelaxed_s = 0;                 // moisture time since the last relaxation
+  // The matrix K + K_c + mu M a Newton relaxation last converged with (newton.cpp), over the
+  // free components chord_components, in compressed columns; empty before. The next
+  // relaxations take their first steps with its factor while it serves (doc/solver.md).
+  std::vector<index_t> chord_components, chord_outer, chord_inner;
+  std::vector<double> chord_values;
+  // runtime: the factor of that matrix, made again where it is not that matrix's
+  std::shared_ptr<ChordFactor> chord_factor;
   // totals
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0

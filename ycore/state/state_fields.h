@@ -40,6 +40,10 @@ void for_each_history_field(S& s, Field&& field) {
   field("water.net_in_carry", s.water.net_in_carry);
   field("water.gross_kg", s.water.gross_kg);
   field("mechanics.unrelaxed_s", s.mechanics.unrelaxed_s);
+  field("mechanics.chord_components", s.mechanics.chord_components);
+  field("mechanics.chord_outer", s.mechanics.chord_outer);
+  field("mechanics.chord_inner", s.mechanics.chord_inner);
+  field("mechanics.chord_values", s.mechanics.chord_values);
   field("mechanics.last_residual", s.mechanics.last_residual);
   field("mechanics.steps", s.mechanics.steps);
   field("mechanics.capped_relaxations", s.mechanics.capped_relaxations);
