@@ -116,31 +116,40 @@ bool line_search(State& s, const FreeComponents& free, const Eigen::VectorXd& f,
 }
 
 // Chord steps from the current state: du solves the chord matrix's factor against the
-// out-of-balance force, cut back by the line search like a Newton step, while each lowers the
-// ratio to kChordContraction of the last's. True where they reach the tolerance.
-bool chord_steps(State& s, const FreeComponents& free, std::int64_t cap,
-                 const std::function<bool(const ForceMeasures&)>& balanced, NewtonOutcome& out) {
+// out-of-balance force, taken whole where it lowers the energy (kSufficientDecrease), while each
+// lowers the ratio to kChordContraction of the last's. True where they reach the tolerance;
+// otherwise false with the state as it was, so that Newton goes on as without them.
+bool chord_steps(State& s, const FreeComponents& free, const std::function<bool(const ForceMeasures&)>& balanced,
+                 NewtonOutcome& out) {
   Mechanics& mech = s.mechanics;
   if (mech.chord_values.empty() || mech.chord_components != free.component) return false;
   StageClock clock;
   const ChordFactor& factor = chord_factor(mech);
   clock.lap(s.wall.solve);
   if (factor.solver.info() != Eigen::Success) return false;
-  for (int k = 0; k < kChordSteps && out.iterations < cap; ++k) {
+  const Undo start(s.nodes, s.joints, s.contact);
+  const std::vector<double> fx = s.nodes.fx, fy = s.nodes.fy;
+  const ForceMeasures start_measures = out.measures;
+  const auto give_up = [&] {
+    start.restore(s.nodes, s.joints, s.contact);
+    s.nodes.fx = fx, s.nodes.fy = fy, out.measures = start_measures;
+    return false;
+  };
+  for (int k = 0; k < kChordSteps; ++k) {
     const double ratio = out.measures.ratio();
     const Eigen::VectorXd f = out_of_balance(free, s.nodes);
     Eigen::VectorXd du = factor.solver.solve(f);
     clock.lap(s.wall.solve);
-    if (!(f.dot(du) > 0.0)) return false;
+    if (!(f.dot(du) > 0.0)) return give_up();
     const double move = longest_move(free, du);
     if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
     const Undo undo(s.nodes, s.joints, s.contact);
     double step = 1.0;
-    if (!line_search(s, free, f, du, undo, cap, step, out)) return false;
+    if (!line_search(s, free, f, du, undo, out.iterations + 1, step, out)) return give_up();
     if (balanced(out.measures)) return true;
-    if (!(out.measures.ratio() <= kChordContraction * ratio)) return false;
+    if (!(out.measures.ratio() <= kChordContraction * ratio)) return give_up();
   }
-  return false;
+  return give_up();
 }
 
 }  // namespace
@@ -155,15 +164,17 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
   NewtonOutcome out;
   out.measures = start;
-  const std::int64_t cap = std::min<std::int64_t>(kMaxEvaluations, controls.max_steps);
   const auto balanced = [&](const ForceMeasures& m) {
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
-  StiffnessSolver solver;
+  // Newton's factor, handed to the chord steps where its step converges.
+  const auto newton_factor = std::make_shared<ChordFactor>();
+  StiffnessSolver& solver = newton_factor->solver;
   StiffnessPattern pattern;
   Eigen::SparseMatrix<double> factorised;  // the matrix of the last Newton step
   double mu = kMinMu;
-  out.converged = balanced(out.measures) || chord_steps(s, free, cap, balanced, out);
+  out.converged = balanced(out.measures) || chord_steps(s, free, balanced, out);
+  const std::int64_t cap = std::min<std::int64_t>(kMaxEvaluations, controls.max_steps) + out.iterations;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
     // The force passes of the line search book their own stages; the rest is "solve".
     StageClock model_clock;
@@ -200,7 +211,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
     }
   }
   // A Newton step's matrix that brought the relaxation to its tolerance serves the next ones.
-  if (out.converged && factorised.nonZeros() > 0) keep_chord_matrix(factorised, free, s.mechanics);
+  if (out.converged && factorised.nonZeros() > 0) keep_chord_factor(factorised, free, newton_factor, s.mechanics);
   std::fill(n.vx.begin(), n.vx.end(), 0.0);
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
   s.contact.damping_ratio = damping;

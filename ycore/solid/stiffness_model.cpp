@@ -65,13 +65,16 @@ ChordFactor& chord_factor(Mechanics& m) {
   return held;
 }
 
-void keep_chord_matrix(const Eigen::SparseMatrix<double>& matrix, const FreeComponents& free, Mechanics& m) {
+void keep_chord_factor(const Eigen::SparseMatrix<double>& matrix, const FreeComponents& free,
+                       const std::shared_ptr<ChordFactor>& factor, Mechanics& m) {
   Eigen::SparseMatrix<double> A = matrix;
   A.makeCompressed();
   m.chord_components = free.component;
   m.chord_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
   m.chord_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   m.chord_values.assign(A.valuePtr(), A.valuePtr() + A.nonZeros());
+  factor->outer = m.chord_outer, factor->inner = m.chord_inner, factor->values = m.chord_values;
+  m.chord_factor = factor;
 }
 
 }  // namespace ydry

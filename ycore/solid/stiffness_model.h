@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "ycore/contact/contact_tangent.h"
@@ -28,8 +29,10 @@ struct ChordFactor {
 // is not theirs: a run restarted from a checkpoint makes the same factor bit for bit.
 ChordFactor& chord_factor(Mechanics& mechanics);
 
-// Keeps A (compressed) over `free` as the chord matrix.
-void keep_chord_matrix(const Eigen::SparseMatrix<double>& A, const FreeComponents& free, Mechanics& mechanics);
+// Keeps A over `free` as the chord matrix, and `factor`, whose solver holds A's factor, as its
+// factor.
+void keep_chord_factor(const Eigen::SparseMatrix<double>& A, const FreeComponents& free,
+                       const std::shared_ptr<ChordFactor>& factor, Mechanics& mechanics);
 
 // The sparsity pattern a solver's ordering and symbolic factorisation were made for: analyse
 // finds them again only when the pattern changes (a joint breaks, a pair comes near).
