@@ -123,9 +123,9 @@ bool chord_steps(State& s, const FreeComponents& free, const std::function<bool(
                  NewtonOutcome& out) {
   Mechanics& mech = s.mechanics;
   if (mech.chord_values.empty() || mech.chord_components != free.component) return false;
-  StageClock clock;
+  StageClock factor_clock;
   const ChordFactor& factor = chord_factor(mech);
-  clock.lap(s.wall.solve);
+  factor_clock.lap(s.wall.solve);
   if (factor.solver.info() != Eigen::Success) return false;
   const Undo start(s.nodes, s.joints, s.contact);
   const std::vector<double> fx = s.nodes.fx, fy = s.nodes.fy;
@@ -136,6 +136,8 @@ bool chord_steps(State& s, const FreeComponents& free, const std::function<bool(
     return false;
   };
   for (int k = 0; k < kChordSteps; ++k) {
+    // The force passes of the line search book their own stages; the solve is "solve".
+    StageClock clock;
     const double ratio = out.measures.ratio();
     const Eigen::VectorXd f = out_of_balance(free, s.nodes);
     Eigen::VectorXd du = factor.solver.solve(f);
