@@ -76,12 +76,12 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
     for (index_t p = first; p < last; ++p)
       if (!carries(p)) c.pair_slip[p] = 0.0;
 
-    const double corner_stiffness = half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
+    const double stiffness_of_corner = corner_stiffness(c, half_penalty, i);
     for (int k = 0; k < carrying.count; ++k) {
       const index_t active = carrying.pair[k];
       const EdgeProjection& at = carrying.at[k];
       const index_t e = c.pair_edge[active], f = next_corner(e);
-      const double stiffness = carrying.weight[k] * corner_stiffness;
+      const double stiffness = carrying.weight[k] * stiffness_of_corner;
       const double b = std::clamp(at.along, 0.0, 1.0), a = 1.0 - b;  // shares of e and f
       const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
       // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
@@ -95,7 +95,7 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
       // step or only at equilibrium (FrictionUpdate).
       double& slip = c.pair_slip[active];
       slip += (vx * at.tx + vy * at.ty) * dt;
-      const double cap = c.tan_friction[tri.material[triangle_of(i)] * material_count + tri.material[triangle_of(e)]] * normal;
+      const double cap = friction_coefficient(c, tri, material_count, i, e) * normal;
       double tangential = -stiffness * slip;
       if (std::fabs(tangential) > cap) {
         tangential = std::copysign(cap, tangential);

@@ -8,6 +8,17 @@
 
 namespace ydry {
 
+// The penalty stiffness of corner i's contact, N/m: half_penalty = p_n t / 2 per surface edge
+// of its own (contact_forces.h); the share of each edge that carries it multiplies it.
+inline double corner_stiffness(const Contact& c, double half_penalty, index_t i) {
+  return half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
+}
+
+// mu of corner i's material against edge e's (contact.tan_friction is [material_count^2]).
+inline double friction_coefficient(const Contact& c, const Triangles& tri, std::size_t material_count, index_t i, index_t e) {
+  return c.tan_friction[tri.material[triangle_of(i)] * material_count + tri.material[triangle_of(e)]];
+}
+
 // A corner against one edge: where it projects (0..1 from the edge's first corner) and how
 // far it lies outside (negative: inside the edge's triangle), with the edge's unit tangent.
 struct EdgeProjection {

@@ -48,11 +48,11 @@ std::vector<ContactLink> contact_links(const Nodes& n, const Triangles& tri, con
     const double b = std::clamp(at.along, 0.0, 1.0);
     link.share[0] = 1.0, link.share[1] = -(1.0 - b), link.share[2] = -b;
     link.tx = at.tx, link.ty = at.ty, link.gap = at.gap, link.length = at.length;
-    link.stiffness = weight * half_penalty * (c.is_surface_edge[i] + c.is_surface_edge[previous_corner(i)]);
+    link.stiffness = weight * corner_stiffness(c, half_penalty, i);
     for (int d = 0; d < 6; ++d) link.force[d] = c.pair_force[6 * std::size_t(p) + d];
     const double normal = link.force[0] * at.ty - link.force[1] * at.tx;
     const double tangential = link.force[0] * at.tx + link.force[1] * at.ty;
-    const double mu = c.tan_friction[tri.material[triangle_of(i)] * material_count + tri.material[triangle_of(e)]];
+    const double mu = friction_coefficient(c, tri, material_count, i, e);
     link.pressing = normal > 0.0;
     // A link that does not press yet is taken as stuck, as it is once the step presses it.
     link.sticks = !link.pressing || std::fabs(tangential) < (1.0 - 1e-9) * mu * normal;
