@@ -48,12 +48,13 @@ double coupling_step_limit(const State& s, const Deck& deck) {
 
 bool equilibrate_and_break(State& s, const Deck& deck, double dt, const RelaxationReport& report) {
   // The solid's force passes book their own stages.
+  std::size_t broken = 0;  // a dynamic run commits the damage at each of its steps
   if (deck.dynamic)
-    move_dynamically(s, dt);
+    broken = move_dynamically(s, dt).joints_broken;
   else
     relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation, deck.relaxation_slide_after, report}, dt);
   StageClock cracking;
-  const bool broke = commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
+  const bool broke = broken + commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
   if (broke) split_across_broken_joints(s, deck);
   cracking.lap(s.wall.cracking);
   return broke;

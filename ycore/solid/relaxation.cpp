@@ -40,10 +40,12 @@
 
 #include "ycore/contact/contact_forces.h"
 #include "ycore/solid/element_forces.h"
+#include "ycore/solid/joint_damage.h"
 #include "ycore/solid/newton.h"
 #include "ycore/solid/numerical_failure.h"
 #include "ycore/solid/solid_forces.h"
 #include "ycore/state/blocked_sum.h"
+#include "ycore/state/stage_timing.h"
 
 namespace ydry {
 namespace {
@@ -281,6 +283,11 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
     measures = compute_forces(s, dt, FrictionUpdate::every_step, false, &undamped);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
+    // In real time every state is one the solid passes through: a joint that passes its peak
+    // keeps the damage, though it unloads before the coupling step ends.
+    StageClock cracking;
+    result.joints_broken += commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints);
+    cracking.lap(s.wall.cracking);
   }
   result.residual = measures.ratio();
   finish_motion(s, result, coupling_dt);

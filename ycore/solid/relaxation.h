@@ -35,6 +35,7 @@ struct RelaxationResult {
   std::int64_t steps = 0;
   double residual = 0;   // ||net force on free components|| / ||element forces||
   bool capped = false;   // stopped by the step cap
+  std::size_t joints_broken = 0;  // move_dynamically: joints its steps broke (damage committed at each)
 };
 
 // One quasi-static step of the solid over `coupling_dt` seconds of the moisture clock:
