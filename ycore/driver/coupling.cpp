@@ -48,16 +48,20 @@ double coupling_step_limit(const State& s, const Deck& deck) {
 
 bool equilibrate_and_break(State& s, const Deck& deck, double dt, const RelaxationReport& report) {
   // The solid's force passes book their own stages.
-  std::size_t broken = 0;  // a dynamic run commits the damage at each of its steps
-  if (deck.dynamic)
-    broken = move_dynamically(s, dt).joints_broken;
-  else
+  std::size_t broken = 0;
+  if (deck.dynamic) {
+    broken = move_dynamically(s, dt).joints_broken;  // the damage committed at each of its steps
+  } else {
     relax(s, {deck.relaxation_tolerance, deck.relaxation_max_steps, deck.relaxation, deck.relaxation_slide_after, report}, dt);
+    StageClock commit;
+    broken = commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints);
+    commit.lap(s.wall.cracking);
+  }
+  if (broken == 0) return false;
   StageClock cracking;
-  const bool broke = broken + commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints) > 0;
-  if (broke) split_across_broken_joints(s, deck);
+  split_across_broken_joints(s, deck);
   cracking.lap(s.wall.cracking);
-  return broke;
+  return true;
 }
 
 bool coupling_step(State& s, const Deck& deck, double dt, bool relax_now, const RelaxationReport& report) {

@@ -17,10 +17,9 @@ namespace {
 // one (written before) restores it as 0, its value until the code that counts it ran.
 const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual",
                                                      "mechanics.friction_slide_relaxations"};
-// The Newton chord matrix (state.h, Mechanics): as large as the checkpoint holds, and none in
-// an older one.
-const std::set<std::string> kChordFields = {"mechanics.chord_components", "mechanics.chord_outer",
-                                            "mechanics.chord_inner", "mechanics.chord_values"};
+// The fields of the Newton chord matrix (state_fields.h) start so: they are as large as the
+// checkpoint holds, and an older checkpoint has none.
+constexpr const char* kChordFieldPrefix = "mechanics.chord_";
 
 template <class R, class Field>
 void for_each_record_field(R& r, Field&& field) {
@@ -177,7 +176,7 @@ void restore_state(State& s, const Checkpoint& c) {
     if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
       if (kTotalsAddedToFormat1.count(name) && !c.fields.count(name)) return;  // an older checkpoint: 0
       c.take(name, value);
-    } else if (kChordFields.count(name)) {
+    } else if (name.rfind(kChordFieldPrefix, 0) == 0) {
       if (c.fields.count(name)) c.take(name, value);
     } else {
       const std::size_t size = value.size();

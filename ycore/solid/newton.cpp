@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "ycore/solid/joint_work.h"
 #include "ycore/solid/stiffness_model.h"
@@ -34,7 +35,7 @@ constexpr int kMaxActiveSetRounds = 8;
 constexpr int kOpeningRounds = 3;
 // Chord steps (the factor of the matrix the last Newton relaxation converged with) a relaxation
 // takes first, at most, each to lower the out-of-balance ratio to this share of the last's at
-// least; where one does not, Newton goes on with the tangent of the state reached.
+// least; where one does not, they are undone and Newton starts as without them.
 constexpr int kChordSteps = 8;
 constexpr double kChordContraction = 0.25;
 
@@ -143,11 +144,11 @@ bool chord_steps(State& s, const FreeComponents& free, const std::function<bool(
     Eigen::VectorXd du = factor.solver.solve(f);
     clock.lap(s.wall.solve);
     if (!(f.dot(du) > 0.0)) return give_up();
-    const double move = longest_move(free, du);
-    if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
-    const Undo undo(s.nodes, s.joints, s.contact);
+    limit_move(free, s.contact.buffer_m, du);
+    std::optional<Undo> moved;  // the state a later step starts from (the first starts from `start`)
+    if (k > 0) moved.emplace(s.nodes, s.joints, s.contact);
     double step = 1.0;
-    if (!line_search(s, free, f, du, undo, out.iterations + 1, step, out)) return give_up();
+    if (!line_search(s, free, f, du, k > 0 ? *moved : start, out.iterations + 1, step, out)) return give_up();
     if (balanced(out.measures)) return true;
     if (!(out.measures.ratio() <= kChordContraction * ratio)) return give_up();
   }
@@ -200,8 +201,7 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
         mu *= 10.0;
         continue;
       }
-      const double move = longest_move(free, du);
-      if (move > s.contact.buffer_m && s.contact.buffer_m > 0.0) du *= s.contact.buffer_m / move;
+      limit_move(free, s.contact.buffer_m, du);
       double step = 1.0;
       accepted = line_search(s, free, f, du, undo, cap, step, out);
       if (!accepted) mu *= 10.0;

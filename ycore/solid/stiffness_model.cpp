@@ -40,7 +40,9 @@ Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_s
   return K_solid + K;
 }
 
-double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
+void limit_move(const FreeComponents& free, double limit, Eigen::VectorXd& du) {
+  if (!(limit > 0.0)) return;
+  // A node's unknowns are consecutive (free_components numbers them in node order).
   double longest2 = 0.0;
   for (std::size_t u = 0; u < free.size();) {
     const index_t node = free.component[u] / 2;
@@ -48,7 +50,8 @@ double longest_move(const FreeComponents& free, const Eigen::VectorXd& du) {
     for (; u < free.size() && free.component[u] / 2 == node; ++u) move2 += du[Eigen::Index(u)] * du[Eigen::Index(u)];
     longest2 = std::max(longest2, move2);
   }
-  return std::sqrt(longest2);
+  const double longest = std::sqrt(longest2);
+  if (longest > limit) du *= limit / longest;
 }
 
 ChordFactor& chord_factor(Mechanics& m) {

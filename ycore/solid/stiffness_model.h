@@ -54,8 +54,9 @@ Eigen::VectorXd free_masses(const FreeComponents& free, const Nodes& nodes);
 Eigen::SparseMatrix<double> model_tangent(const Eigen::SparseMatrix<double>& K_solid, const std::vector<ContactLink>& links,
                                           const std::vector<std::uint8_t>& active, const FreeComponents& free);
 
-// The longest move of a node in du. A node's unknowns are consecutive (free_components numbers
-// them in node order).
-double longest_move(const FreeComponents& free, const Eigen::VectorXd& du);
+// Scales du down so that no node moves farther than `limit` (> 0; none: 0), so that the broad
+// phase, which keeps the pairs within two contact buffers, sees every surface a step brings a
+// corner to.
+void limit_move(const FreeComponents& free, double limit, Eigen::VectorXd& du);
 
 }  // namespace ydry
