@@ -8,7 +8,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libvtk9-dev catch2 libtomlplusplus-dev libcli11-dev
+  libeigen3-dev libmetis-dev libvtk9-dev catch2 libtomlplusplus-dev libcli11-dev
   gmsh
   python3 python3-numpy python3-matplotlib python3-vtk9
   xvfb  # Debian's VTK renders through X only: scripts/virtual_display.py starts an Xvfb

@@ -8,6 +8,7 @@
 #include "ycore/driver/coupling.h"
 #include "ycore/driver/setup.h"
 #include "ycore/solid/solid_forces.h"
+#include "ycore/solid/stiffness_model.h"
 #include "ycore/solid/tangent.h"
 
 using namespace ydry;
@@ -154,4 +155,51 @@ TEST_CASE("a drying elastic block's later relaxations are served by the factor N
     difference = std::max(difference, std::hypot(served.nodes.x[i] - fresh.nodes.x[i], served.nodes.y[i] - fresh.nodes.y[i]));
   }
   CHECK(difference <= 1e-4 * largest);
+}
+
+TEST_CASE("the factorisations order by whichever of AMD and METIS fills the mesh's factor less, "
+          "and either gives the same equilibrium", "[newton]") {
+  // nnz(L) of the symbolic factor of the whole intact mesh's tangent (the elastic state as set
+  // up: every joint intact), by the ordering.
+  const auto fill = [](const State& s, const FreeComponents& free, auto ordering) {
+    using Ordering = decltype(ordering);
+    const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Ordering> solver;
+    solver.analyzePattern(K);
+    return solver.matrixL().nestedExpression().nonZeros();
+  };
+  // A strip twice as long as high (the drying block) and a square of 4,356 triangles: AMD fills
+  // the strip's factor less, METIS the square's (bench/bench_factorisation.cpp).
+  for (const char* size : {"[0.1, 0.05]", "[0.1, 0.1]"}) {
+    INFO(size);
+    State s = prepare_state(drying_block({std::string("mesh.size=") + size, "mesh.element_size=0.003"}));
+    const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
+    const auto amd = fill(s, free, Eigen::AMDOrdering<int>()), metis = fill(s, free, Eigen::MetisOrdering<int>());
+    REQUIRE(amd != metis);
+    CHECK(fill_ordering(s.triangles, s.joints, s.materials, free, s.mechanics) ==
+          (metis < amd ? FillOrdering::metis : FillOrdering::amd));
+    CHECK(s.mechanics.fill_ordering == (metis < amd ? FillOrdering::metis : FillOrdering::amd));
+  }
+  // The drying block relaxed with each: the same equilibrium. Both end where the out-of-balance
+  // force is within the tolerance of 1e-7 or the round-off floor; measured, the displacements
+  // differ by 1.7e-10 of the largest.
+  State results[2];
+  for (const FillOrdering ordering : {FillOrdering::amd, FillOrdering::metis}) {
+    const Deck deck = drying_block({"solver.relaxation=\"newton\""});
+    State& s = results[ordering == FillOrdering::metis];
+    s = prepare_state(deck);
+    s.mechanics.fill_ordering = ordering;
+    equilibrate_and_break(s, deck, 0.0);
+    advance_to(s, deck, deck.end_time_s, coupling_step_limit(s, deck));
+    REQUIRE(s.mechanics.fill_ordering == ordering);
+    CHECK(s.mechanics.newton_fallbacks == 0);
+    CHECK(s.mechanics.worst_residual <= 1e-7);
+  }
+  const Nodes& a = results[0].nodes;
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    largest = std::max(largest, std::hypot(a.x[i] - a.x0[i], a.y[i] - a.y0[i]));
+    difference = std::max(difference, std::hypot(a.x[i] - results[1].nodes.x[i], a.y[i] - results[1].nodes.y[i]));
+  }
+  CHECK(difference <= 1e-8 * largest);
 }

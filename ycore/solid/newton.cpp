@@ -165,13 +165,14 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   metric.mass = free_masses(free, n);
   const double damping = s.contact.damping_ratio;
   s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
+  const FillOrdering ordering = fill_ordering(s.triangles, s.joints, s.materials, free, s.mechanics);
   NewtonOutcome out;
   out.measures = start;
   const auto balanced = [&](const ForceMeasures& m) {
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };
   // Newton's factor, handed to the chord steps where its step converges.
-  const auto newton_factor = std::make_shared<ChordFactor>();
+  const auto newton_factor = std::make_shared<ChordFactor>(ordering);
   StiffnessSolver& solver = newton_factor->solver;
   StiffnessPattern pattern;
   Eigen::SparseMatrix<double> factorised;  // the matrix of the last Newton step

@@ -54,8 +54,51 @@ void limit_move(const FreeComponents& free, double limit, Eigen::VectorXd& du) {
   if (longest > limit) du *= limit / longest;
 }
 
+namespace {
+
+// nnz(L) of the symbolic factorisation of A with the ordering.
+template <class Ordering>
+Eigen::Index symbolic_fill(const Eigen::SparseMatrix<double>& A) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Ordering> solver;
+  solver.analyzePattern(A);
+  return solver.matrixL().nestedExpression().nonZeros();
+}
+
+}  // namespace
+
+FillOrdering fill_ordering(const Triangles& tri, const Joints& jt, const std::vector<MaterialModel>& materials,
+                           const FreeComponents& free, Mechanics& m) {
+  if (m.fill_ordering != FillOrdering::undecided) return m.fill_ordering;
+  // The pattern of the tangent with every part in it (tangent.cpp): a block between the free
+  // components of each part's nodes.
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add_part = [&](const index_t* node, int corners) {
+    for (int r = 0; r < 2 * corners; ++r) {
+      const index_t row = free.unknown[2 * std::size_t(node[r / 2]) + r % 2];
+      if (row == kNoIndex) continue;
+      for (int c = 0; c < 2 * corners; ++c) {
+        const index_t column = free.unknown[2 * std::size_t(node[c / 2]) + c % 2];
+        if (column != kNoIndex) entries.emplace_back(row, column, row == column ? 1.0 : 0.0);
+      }
+    }
+  };
+  for (std::size_t e = 0; e < tri.size(); ++e) {
+    if (!materials[tri.material[e]].mechanical) continue;
+    const index_t node[3] = {corner_node(index_t(e), 0), corner_node(index_t(e), 1), corner_node(index_t(e), 2)};
+    add_part(node, 3);
+  }
+  for (std::size_t j = 0; j < jt.size(); ++j)
+    if (materials[jt.law[j]].mechanical) add_part(&jt.node[4 * j], 4);
+  Eigen::SparseMatrix<double> A(Eigen::Index(free.size()), Eigen::Index(free.size()));
+  A.setFromTriplets(entries.begin(), entries.end());
+  m.fill_ordering = symbolic_fill<Eigen::MetisOrdering<int>>(A) < symbolic_fill<Eigen::AMDOrdering<int>>(A)
+                        ? FillOrdering::metis
+                        : FillOrdering::amd;
+  return m.fill_ordering;
+}
+
 ChordFactor& chord_factor(Mechanics& m) {
-  if (!m.chord_factor) m.chord_factor = std::make_shared<ChordFactor>();
+  if (!m.chord_factor) m.chord_factor = std::make_shared<ChordFactor>(m.fill_ordering);
   ChordFactor& held = *m.chord_factor;
   if (held.values == m.chord_values && held.inner == m.chord_inner && held.outer == m.chord_outer) return held;
   const Eigen::Index n = Eigen::Index(m.chord_outer.size()) - 1;

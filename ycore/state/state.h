@@ -220,6 +220,8 @@ struct Contact {
 
 // The solid's controls, relaxation scratch and energy bookkeeping.
 struct ChordFactor;  // stiffness_model.h
+// The fill-reducing ordering of the implicit solver's factorisations (stiffness_model.h).
+enum class FillOrdering : std::uint8_t { undecided, amd, metis };
 
 struct Mechanics {
   // constant
@@ -243,6 +245,9 @@ struct Mechanics {
   std::vector<double> chord_values;
   // runtime: the factor of that matrix, made again where it is not that matrix's
   std::shared_ptr<ChordFactor> chord_factor;
+  // runtime: the ordering of this mesh's factorisations, decided from the mesh at the first
+  // (fill_ordering in stiffness_model.h), so again the same after a restart
+  FillOrdering fill_ordering = FillOrdering::undecided;
   // totals
   double last_residual = 0;               // out-of-balance force ratio after the last relaxation
   std::uint64_t steps = 0;                // mechanical steps since t = 0
