@@ -97,7 +97,7 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
       slip += (vx * at.tx + vy * at.ty) * dt;
       const double cap = friction_coefficient(c, tri, material_count, i, e) * normal;
       double tangential = -stiffness * slip;
-      if (std::fabs(tangential) > cap) {
+      if (!friction_sticks(tangential, cap)) {
         tangential = std::copysign(cap, tangential);
         if (friction == FrictionUpdate::every_step) slip = -tangential / stiffness;
       }

@@ -19,6 +19,11 @@ inline double friction_coefficient(const Contact& c, const Triangles& tri, std::
   return c.tan_friction[tri.material[triangle_of(i)] * material_count + tri.material[triangle_of(e)]];
 }
 
+// Whether a contact's friction sticks: the pull of its elastic slip, -stiffness x slip, is
+// within the cap mu f_n (doc/physics.md "Contact and friction"). The force kernel slides the
+// slip where it does not; the Newton links give it its spring where it does.
+inline bool friction_sticks(double slip_pull, double cap) { return !(std::fabs(slip_pull) > cap); }
+
 // A corner against one edge: where it projects (0..1 from the edge's first corner) and how
 // far it lies outside (negative: inside the edge's triangle), with the edge's unit tangent.
 struct EdgeProjection {

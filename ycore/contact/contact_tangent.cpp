@@ -51,11 +51,12 @@ std::vector<ContactLink> contact_links(const Nodes& n, const Triangles& tri, con
     link.stiffness = weight * corner_stiffness(c, half_penalty, i);
     for (int d = 0; d < 6; ++d) link.force[d] = c.pair_force[6 * std::size_t(p) + d];
     const double normal = link.force[0] * at.ty - link.force[1] * at.tx;
-    const double tangential = link.force[0] * at.tx + link.force[1] * at.ty;
-    const double mu = friction_coefficient(c, tri, material_count, i, e);
     link.pressing = normal > 0.0;
-    // A link that does not press yet is taken as stuck, as it is once the step presses it.
-    link.sticks = !link.pressing || std::fabs(tangential) < (1.0 - 1e-9) * mu * normal;
+    // The force kernel's rule on the pair's slip. A link that does not press yet has no slip
+    // (the kernel keeps none where there is no contact) and is taken as stuck, as it is once
+    // the step presses it.
+    const double cap = link.pressing ? friction_coefficient(c, tri, material_count, i, e) * normal : 0.0;
+    link.sticks = friction_sticks(-link.stiffness * c.pair_slip[std::size_t(p)], cap);
     return link;
   };
   const std::size_t corners = c.node_pairs.size() - 1;
