@@ -13,6 +13,7 @@
 #include "ycore/input/input_error.h"
 #include "ycore/output/reactions_csv.h"
 #include "ycrack/cracks_csv.h"
+#include "ycrack/network_census.h"
 #include "ycrack/surface_profile.h"
 
 namespace ydry {
@@ -101,7 +102,11 @@ void RunSession::write_files_of_checkpoint() {
 void RunSession::write_row(bool completed) {
   const State& s = state_;
   if (s.time_s >= double(record_.next_frame) * deck_.output_interval_s * (1.0 - 1e-12) || completed) {
-    write_frame(frames_, s, s.time_s);
+    // The fragments the broken joints cut the solid into, for ParaView to colour.
+    write_frame(frames_, s, s.time_s,
+                deck_.mechanics ? take_network_census(s.nodes, s.triangles, s.joints, s.materials, s.material_names.size())
+                                      .cell_of_triangle
+                                : std::vector<index_t>{});
     if (surface_edges_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *surface_edges_)));
     record_.next_frame = std::uint64_t(std::lround(std::floor(s.time_s / deck_.output_interval_s * (1.0 + 1e-12)))) + 1;
   }

@@ -36,7 +36,7 @@ double node_moisture(const State& s, index_t node) {
   return mn == kNoIndex ? std::numeric_limits<double>::quiet_NaN() : s.moisture.w[mn];
 }
 
-vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
+vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s, const std::vector<index_t>& cell_of_triangle) {
   const Nodes& n = s.nodes;
   const vtkIdType np = static_cast<vtkIdType>(n.size());
   const vtkIdType nt = static_cast<vtkIdType>(s.triangles.size());
@@ -81,6 +81,13 @@ vtkNew<vtkUnstructuredGrid> bulk_grid(const State& s) {
     for (vtkIdType t = 0; t < nt; ++t)
       stress->SetTuple3(t, s.triangles.sxx[t], s.triangles.syy[t], s.triangles.sxy[t]);
     grid->GetCellData()->AddArray(stress);
+  }
+  if (cell_of_triangle.size() == static_cast<std::size_t>(nt)) {
+    vtkNew<vtkIntArray> cell;
+    cell->SetName("cell");
+    cell->SetNumberOfTuples(nt);
+    for (vtkIdType t = 0; t < nt; ++t) cell->SetValue(t, cell_of_triangle[t] == kNoIndex ? -1 : int(cell_of_triangle[t]));
+    grid->GetCellData()->AddArray(cell);
   }
   return grid;
 }
@@ -173,10 +180,10 @@ std::string pvd_text(const FrameSeries& series) {
 
 }  // namespace
 
-void write_frame(FrameSeries& series, const State& state, double time_s) {
+void write_frame(FrameSeries& series, const State& state, double time_s, const std::vector<index_t>& cell_of_triangle) {
   const std::size_t index = series.times.size();
   const std::string relative = frame_file(series.name, "", index);
-  write_grid(bulk_grid(state), series.outdir + "/" + relative);
+  write_grid(bulk_grid(state, cell_of_triangle), series.outdir + "/" + relative);
   write_grid(crack_grid(state), series.outdir + "/" + frame_file(series.name, "_cracks", index));
   series.times.push_back(time_s);
   series.files.push_back(relative);

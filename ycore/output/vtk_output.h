@@ -21,7 +21,10 @@ struct FrameSeries {
 // midpoints of its end node pairs; cell data opening and slip, m, the means of the two
 // ends, and moisture_face1 and moisture_face2, the mean moisture of each face's two corners,
 // NaN without moisture) and rewrites NAME.pvd, which lists both per frame as parts 0 and 1.
-void write_frame(FrameSeries& series, const State& state, double time_s);
+// `cell_of_triangle`, where given ([triangles]: the fragment of each, kNoIndex for none; the
+// network census's), is the bulk's cell array `cell` (-1 for none).
+void write_frame(FrameSeries& series, const State& state, double time_s,
+                 const std::vector<index_t>& cell_of_triangle = {});
 
 // A restarted run's frames: those at `times` (a checkpoint's list), whose files must be in the
 // folder (InputError otherwise). Frames numbered after them, which a later state of the run
