@@ -5,8 +5,9 @@ Prints the machine (cores, CPU model, load average), the compiler, the commit, t
 bandwidth (bench_memory: the STREAM triad at 1 thread and at all threads, the ceiling of a step
 on a mesh larger than the cache), then the lines of bench_moisture (moisture node-steps per
 second) and bench_mechanics (element-steps per second of the 200k-triangle cracking rectangle
-and of the Peron mesh, at 1 thread and at all threads, with their wall time by stage), and
-appends all of it to RESULTS.md as a dated section with the command that made it. The Peron
+and of the Peron mesh, at 1 thread and at all threads, with their wall time by stage) and
+bench_factorisation (the implicit solver's factorisation of the Peron deck at the stiff
+penalties with each ordering, AMD and METIS), and appends all of it to RESULTS.md as a dated section with the command that made it. The Peron
 end-to-end figures (wall time, steps) come from a full run's summary.json: one made before
 (--peron-run DIR), or one this script makes first (--peron: 7-9 minutes on 2 cores).
 
@@ -102,6 +103,8 @@ def main():
     lines += run_bench(args.build / "bench" / "bench_memory")
     lines += run_bench(args.build / "bench" / "bench_moisture")
     lines += run_bench(args.build / "bench" / "bench_mechanics")
+    lines += run_bench(args.build / "bench" / "bench_factorisation", str(REPO / "inputs/peron/peron.toml"),
+                       "--set", "solver.joint_penalty=100", "--set", "contact.penalty=4e7")
     if peron_run:
         lines += peron_lines(peron_run)
         print(lines[-1])
