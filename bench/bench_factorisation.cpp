@@ -16,6 +16,7 @@
 
 #include "ycore/driver/setup.h"
 #include "ycore/input/deck.h"
+#include "ycore/solid/newton.h"
 #include "ycore/solid/solid_forces.h"
 #include "ycore/solid/stiffness_model.h"
 
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
         ydry::contact_links(s.nodes, s.triangles, s.mechanics, s.contact, s.contact.buffer_m);
     Matrix A = ydry::model_tangent(K, links, ydry::links_in_contact(links), free);
     const Eigen::VectorXd mass = ydry::free_masses(free, s.nodes);
-    A.diagonal() += 1e-8 * (K.diagonal().sum() / mass.sum()) * mass;
+    A.diagonal() += ydry::kMinMu * (K.diagonal().sum() / mass.sum()) * mass;
     A.makeCompressed();
     const Eigen::VectorXd f = ydry::out_of_balance(free, s.nodes);
     std::printf("%s: %zu triangles, %zu unknowns, nnz(A) %lld, %zu contact links\n", argv[1], s.triangles.size(),

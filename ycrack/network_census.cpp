@@ -18,6 +18,11 @@ constexpr double kTeeAngle = 150.0;
 // How far a branch is followed to find its direction, in mean broken-joint lengths.
 constexpr double kBranchReach = 3.0;
 
+bool deformable(const Triangles& tri, const std::vector<MaterialModel>& materials, index_t t) {
+  const MaterialModel& m = materials[tri.material[t]];
+  return m.mechanical && !m.rigid;
+}
+
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
 // Current area of triangle t (positive: its corners run counter-clockwise).
@@ -50,79 +55,77 @@ std::size_t NetworkCensus::count(JunctionKind kind) const {
   return std::size_t(std::count_if(junctions.begin(), junctions.end(), [&](const Junction& j) { return j.kind == kind; }));
 }
 
+std::vector<index_t> fragment_cells(const Triangles& tri, const Joints& jt, const std::vector<MaterialModel>& materials) {
+  std::vector<index_t> parent(tri.size());
+  for (std::size_t t = 0; t < tri.size(); ++t) parent[t] = index_t(t);
+  for (std::size_t j = 0; j < jt.size(); ++j)
+    if (!jt.broken[j]) unite(parent, triangle_of(jt.node[4 * j]), triangle_of(jt.node[4 * j + 2]));
+  std::vector<index_t> cell_of_triangle(tri.size(), kNoIndex), cell_of_root(tri.size(), kNoIndex);
+  index_t cells = 0;
+  for (std::size_t t = 0; t < tri.size(); ++t) {
+    if (!deformable(tri, materials, index_t(t))) continue;
+    index_t& cell = cell_of_root[find_root(parent, index_t(t))];
+    if (cell == kNoIndex) cell = cells++;
+    cell_of_triangle[t] = cell;
+  }
+  return cell_of_triangle;
+}
+
 NetworkCensus take_network_census(const Nodes& n, const Triangles& tri, const Joints& jt,
                                   const std::vector<MaterialModel>& materials, std::size_t material_count) {
   NetworkCensus census;
-  const auto counted = [&](index_t t) {
-    const MaterialModel& m = materials[tri.material[t]];
-    return m.mechanical && !m.rigid;
-  };
-  const auto crack_joint = [&](std::size_t j) {
-    return !is_interface_joint(jt, material_count, j) && counted(triangle_of(jt.node[4 * j]));
-  };
+  census.cell_of_triangle = fragment_cells(tri, jt, materials);
+  std::size_t cells = 0;  // numbered from 0 in order: one more than the largest
+  for (const index_t cell : census.cell_of_triangle)
+    if (cell != kNoIndex) cells = std::max(cells, std::size_t(cell) + 1);
+  census.cell_area_m2.assign(cells, 0.0);
+  census.cell_perimeter_m.assign(cells, 0.0);
 
-  // Cells: triangles joined by intact joints. The edges a joint covers are a-b (from node 4j)
-  // and b'-a' (from node 4j+2); an edge no joint covers is on the outer boundary.
-  std::vector<index_t> parent(tri.size());
-  for (std::size_t t = 0; t < tri.size(); ++t) parent[t] = index_t(t);
+  // The edges a joint covers are a-b (from node 4j) and b'-a' (from node 4j+2); an edge no
+  // joint covers is on the outer boundary.
   std::vector<std::uint8_t> jointed(n.size(), 0);
-  for (std::size_t j = 0; j < jt.size(); ++j) {
-    jointed[jt.node[4 * j]] = jointed[jt.node[4 * j + 2]] = 1;
-    if (!jt.broken[j]) unite(parent, triangle_of(jt.node[4 * j]), triangle_of(jt.node[4 * j + 2]));
-  }
-  census.cell_of_triangle.assign(tri.size(), kNoIndex);
-  std::vector<index_t> cell_of_root(tri.size(), kNoIndex);
+  for (std::size_t j = 0; j < jt.size(); ++j) jointed[jt.node[4 * j]] = jointed[jt.node[4 * j + 2]] = 1;
+  const std::size_t vertices = n.size() > 0 ? std::size_t(1 + *std::max_element(n.vertex.begin(), n.vertex.end())) : 0;
+  std::vector<index_t> node_of_vertex(vertices, kNoIndex);  // a corner made from it
+  std::vector<std::uint8_t> on_boundary(vertices, 0);
   for (std::size_t t = 0; t < tri.size(); ++t) {
-    if (!counted(index_t(t))) continue;
-    index_t& cell = cell_of_root[find_root(parent, index_t(t))];
-    if (cell == kNoIndex) {
-      cell = index_t(census.cell_area_m2.size());
-      census.cell_area_m2.push_back(0.0);
-      census.cell_perimeter_m.push_back(0.0);
-    }
-    census.cell_of_triangle[t] = cell;
+    const index_t cell = census.cell_of_triangle[t];
+    if (cell == kNoIndex) continue;
     census.cell_area_m2[cell] += triangle_area(n, index_t(t));
     census.layer_area_m2 += tri.area0[t];
     for (int k = 0; k < 3; ++k) {
       const index_t e = corner_node(index_t(t), k);
-      if (!jointed[e]) census.cell_perimeter_m[cell] += edge_length(n, e);
+      node_of_vertex[n.vertex[e]] = e;
+      if (jointed[e]) continue;
+      census.cell_perimeter_m[cell] += edge_length(n, e);
+      on_boundary[n.vertex[e]] = on_boundary[n.vertex[next_corner(e)]] = 1;
     }
   }
 
   // Broken joints: their faces outline the cells, their voids are the crack area, and they
   // join the mesh vertices of the crack network.
   std::map<index_t, std::vector<std::size_t>> joints_at;  // mesh vertex -> its broken joints
-  std::map<index_t, std::pair<double, double>> vertex_at;
   std::size_t broken = 0;
   for (std::size_t j = 0; j < jt.size(); ++j) {
-    if (!jt.broken[j] || !crack_joint(j)) continue;
     const index_t first = triangle_of(jt.node[4 * j]), second = triangle_of(jt.node[4 * j + 2]);
+    if (!jt.broken[j] || is_interface_joint(jt, material_count, j) || census.cell_of_triangle[first] == kNoIndex) continue;
     census.cell_perimeter_m[census.cell_of_triangle[first]] += edge_length(n, jt.node[4 * j]);
     census.cell_perimeter_m[census.cell_of_triangle[second]] += edge_length(n, jt.node[4 * j + 2]);
     census.crack_area_m2 += joint_void(n, jt, j);
     census.crack_length_m += jt.length0[j];
     ++broken;
-    for (int k = 0; k < 2; ++k) {
-      const index_t node = jt.node[4 * j + k];
-      joints_at[n.vertex[node]].push_back(j);
-      vertex_at[n.vertex[node]] = {n.x0[node], n.y0[node]};
-    }
+    for (int k = 0; k < 2; ++k) joints_at[n.vertex[jt.node[4 * j + k]]].push_back(j);
   }
-  // Vertices on the outer boundary: a crack that meets it ends there, no junction.
-  std::map<index_t, bool> on_boundary;
-  for (std::size_t e = 0; e < n.size(); ++e)
-    if (!jointed[e] && counted(triangle_of(index_t(e))))
-      on_boundary[n.vertex[e]] = on_boundary[n.vertex[next_corner(index_t(e))]] = true;
-
   const double reach = broken > 0 ? kBranchReach * census.crack_length_m / double(broken) : 0.0;
   const auto other_end = [&](std::size_t j, index_t vertex) {
     const index_t a = n.vertex[jt.node[4 * j]];
     return a == vertex ? n.vertex[jt.node[4 * j + 1]] : a;
   };
   for (const auto& [vertex, joints] : joints_at) {
-    if (joints.size() < 3 || on_boundary.count(vertex)) continue;
+    // A crack that meets the outer boundary ends there: no junction.
+    if (joints.size() < 3 || on_boundary[vertex]) continue;
     Junction junction;
-    junction.x0 = vertex_at.at(vertex).first, junction.y0 = vertex_at.at(vertex).second;
+    junction.x0 = n.x0[node_of_vertex[vertex]], junction.y0 = n.y0[node_of_vertex[vertex]];
     std::vector<double> directions;
     for (const std::size_t start : joints) {
       // Along the branch through vertices where its crack only passes (two broken joints).
@@ -135,8 +138,8 @@ NetworkCensus take_network_census(const Nodes& n, const Triangles& tri, const Jo
         run += jt.length0[through];
         at = other_end(through, at);
       }
-      const auto& [x, y] = vertex_at.at(at);
-      directions.push_back(std::atan2(y - junction.y0, x - junction.x0) * 180.0 / kPi);
+      const index_t end = node_of_vertex[at];
+      directions.push_back(std::atan2(n.y0[end] - junction.y0, n.x0[end] - junction.x0) * 180.0 / kPi);
     }
     std::sort(directions.begin(), directions.end());
     for (std::size_t k = 0; k < directions.size(); ++k)

@@ -23,9 +23,8 @@ struct Junction {
 };
 
 struct NetworkCensus {
-  // [triangles] the cell of each triangle of a material with mechanics (kNoIndex for others):
-  // cells are numbered in the order of their lowest triangle.
-  std::vector<index_t> cell_of_triangle;
+  std::vector<index_t> cell_of_triangle;  // fragment_cells
+
   std::vector<double> cell_area_m2;        // [cells] current area
   std::vector<double> cell_perimeter_m;    // [cells] current length of its outline: the outer
                                            // boundary's edges and the faces of broken joints
@@ -40,7 +39,13 @@ struct NetworkCensus {
   std::size_t count(JunctionKind kind) const;
 };
 
-// The census of the current state. Triangles of materials with mechanics count; joints of a
+// [triangles] the cell (fragment) of each triangle of a deformable material, kNoIndex for the
+// others: the sets of triangles that intact joints join, numbered in the order of their
+// lowest triangle. The census's cell_of_triangle; the frames' `cell` array.
+std::vector<index_t> fragment_cells(const Triangles& triangles, const Joints& joints,
+                                    const std::vector<MaterialModel>& materials);
+
+// The census of the current state. Triangles of deformable materials count; joints of a
 // bonded interface between two materials are no cracks. A cell is a set of triangles that
 // intact joints join. A broken joint's void is the area of the quadrilateral between its two
 // faces where they lie apart (0 where they press together). The crack network is the graph of

@@ -104,9 +104,7 @@ void RunSession::write_row(bool completed) {
   if (s.time_s >= double(record_.next_frame) * deck_.output_interval_s * (1.0 - 1e-12) || completed) {
     // The fragments the broken joints cut the solid into, for ParaView to colour.
     write_frame(frames_, s, s.time_s,
-                deck_.mechanics ? take_network_census(s.nodes, s.triangles, s.joints, s.materials, s.material_names.size())
-                                      .cell_of_triangle
-                                : std::vector<index_t>{});
+                deck_.mechanics ? fragment_cells(s.triangles, s.joints, s.materials) : std::vector<index_t>{});
     if (surface_edges_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *surface_edges_)));
     record_.next_frame = std::uint64_t(std::lround(std::floor(s.time_s / deck_.output_interval_s * (1.0 + 1e-12)))) + 1;
   }

@@ -12,13 +12,6 @@
 namespace ydry {
 namespace {
 
-// The trust region's mu, relative to the mean of diag K / diag M: from this small start (a
-// Newton step where K is positive definite), times 10 on each refusal, divided by 10 after
-// each accepted step, given up above kMaxMu (the step is then a thousandth of a free fall's).
-// The start also bounds how far a body that no support holds drifts: round-off's net force
-// on it moves it by that force / (mu scale m) a step (a free block shrinking by 1 mm drifts
-// 3 nm at 1e-8, 0.3 um at 1e-10: tests/test_surface.cpp).
-constexpr double kMinMu = 1e-8, kMaxMu = 1e6;
 // A step is accepted when it lowers the energy by at least this share of what its first-order
 // change promises (Armijo's rule), the energy's change measured by the trapezoid of its slopes
 // -f.du at the two ends (exact where the energy is quadratic along du).
