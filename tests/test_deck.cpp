@@ -182,6 +182,18 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
        "solver.relaxation: \"cg\" is not one of \"viscous\", \"fire\""},
       {"relaxations rarer than the rows of the tables", "", "", "--set solver.mechanics_interval=60",
        "solver.mechanics_interval: is longer than run.series_interval"},
+      {"a substrate without plan view", "rate = -1.0e-5", "rate = -1.0e-5\n[substrate]\nstiffness = 1.0e6", "",
+       "deck.toml:23: substrate.stiffness: a substrate holds a layer seen in plan view: set run.view = \"plan\""},
+      {"a negative substrate stiffness", "name = \"t\"", "name = \"t\"\nview = \"plan\"",
+       "--set substrate.stiffness=-1.0", "substrate.stiffness: value -1 out of range"},
+      {"an unknown plan-view key", "name = \"t\"", "name = \"t\"\nview = \"plan\"", "--set substrate.shear=1.0",
+       "substrate.shear: unknown key"},
+      {"plan view in plane strain", "name = \"t\"", "name = \"t\"\nview = \"plan\"\nplane = \"strain\"", "",
+       "deck.toml:4: run.plane: a layer seen in plan view is in plane stress"},
+      {"in-plane gravity in plan view", "name = \"t\"", "name = \"t\"\nview = \"plan\"\ngravity = [0.0, -9.81]", "",
+       "deck.toml:4: run.gravity: in plan view gravity acts through the layer's thickness"},
+      {"an unknown view", "name = \"t\"", "name = \"t\"\nview = \"oblique\"", "",
+       "deck.toml:3: run.view: \"oblique\" is not one of"},
   };
   for (const Case& c : cases) {
     ydry_test::TempDir dir;

@@ -421,7 +421,7 @@ TEST_CASE("the stable step is below 2 / omega_max of the linearised solid and wi
   ydry_test::TempDir dir;
   State s = setup_state(ydry_test::block_deck(dir, "right"));
   const std::size_t nn = s.nodes.size();
-  const double step = stable_mechanics_step(s.nodes, s.triangles, s.joints, s.mechanics, s.contact, s.materials, 1.0);
+  const double step = stable_mechanics_step(s.nodes, s.triangles, s.joints, s.mechanics, s.contact, s.substrate, s.materials, 1.0);
   // Stiffness by central differences of the net forces, mass-normalised: M^-1/2 K M^-1/2.
   Eigen::MatrixXd k(2 * nn, 2 * nn);
   const double h = 1e-10;

@@ -21,13 +21,20 @@ void read_run(TableReader r, Deck& d) {
   if (d.name.empty() || d.name.find_first_of("/\\ ") != std::string::npos)
     r.error("name", "must be a non-empty name without spaces or slashes (it names the output files)");
   d.plane_strain = r.string("plane", {"stress", "strain"}, std::string("stress")) == "strain";
+  // Read only when given, so that a vertical section's resolved deck is as it always was.
+  d.plan_view = r.optional_string("view", {"section", "plan"}).value_or("section") == "plan";
+  if (d.plan_view && d.plane_strain)
+    r.error("plane", "a layer seen in plan view is in plane stress: its top and bottom faces carry no normal stress");
   d.thickness_m = r.number("thickness", kPositive, 1.0);
   d.end_time_s = r.number("end_time", kPositive, std::nullopt);
   d.output_interval_s = r.number("output_interval", kPositive, std::nullopt);
   d.series_interval_s = r.number("series_interval", kPositive, d.output_interval_s);
   if (d.series_interval_s > d.output_interval_s)
     r.error("series_interval", "is longer than run.output_interval (tables get at least a row per frame)");
-  d.gravity = r.pair("gravity", kAny, std::array<double, 2>{0.0, -9.81});
+  d.gravity = r.pair("gravity", kAny, std::array<double, 2>{0.0, d.plan_view ? 0.0 : -9.81});
+  if (d.plan_view && (d.gravity[0] != 0.0 || d.gravity[1] != 0.0))
+    r.error("gravity", "in plan view gravity acts through the layer's thickness, pressing it on its base: give "
+                       "substrate.gravity instead");
   d.mechanics = r.boolean("mechanics", true);
   d.seed = r.integer("seed", 0, 1);
   d.crack_width_threshold_m = r.number("crack_width_threshold", kNonNegative, 1e-5);
@@ -208,6 +215,20 @@ void read_contact(TableReader r, Deck& d, const Origin& file) {
   r.finish();
 }
 
+// [substrate] (doc/deck.md "[substrate]"): only in plan view.
+void read_substrate(TableReader r, Deck& d) {
+  if (!d.plan_view)
+    r.error(r.keys().empty() ? std::string("stiffness") : r.keys().front(),
+            "a substrate holds a layer seen in plan view: set run.view = \"plan\"");
+  SubstrateDeck b;
+  b.stiffness_pa_m = r.optional_number("stiffness", kPositive);
+  b.adhesion_pa = r.number("adhesion", kNonNegative, 0.0);
+  b.friction_angle_deg = r.number("friction_angle", Range{0, 90, false, true}, 0.0);
+  b.gravity = r.number("gravity", kNonNegative, 9.81);
+  r.finish();
+  d.substrate = b;
+}
+
 void read_solver(TableReader r, Deck& d) {
   d.moisture_safety = r.number("moisture_safety", Range{0, 1, true, false}, 0.9);
   d.max_coupling_step_s = r.number("max_coupling_step", kNonNegative, 0.0);
@@ -299,6 +320,7 @@ Deck read_deck(const std::string& text, const std::string& path, const std::vect
   read_solver(TableReader(top.subtable("solver"), "solver", origin), d);
   // Read only when present, so that a deck without interfaces resolves as it always did.
   if (top.has("interfaces")) read_interfaces(TableReader(top.subtable("interfaces"), "interfaces", origin), d, origin);
+  if (top.has("substrate")) read_substrate(TableReader(top.subtable("substrate"), "substrate", origin), d);
   top.finish();
 
   if (d.output_interval_s > d.end_time_s)

@@ -82,6 +82,14 @@ inline const std::vector<std::string> kRelaxationMethodKeys = {"viscous", "fire"
 
 // The defaults of the relaxation's [solver] keys (doc/deck.md "[solver]"): the deck reader
 // fills them in and RelaxationControls (ycore/solid/relaxation.h) starts from them.
+// [substrate] (doc/deck.md "[substrate]"): the base under a layer seen in plan view.
+struct SubstrateDeck {
+  std::optional<double> stiffness_pa_m;  // k_b, Pa/m; absent: G / h of the layer's material
+  double adhesion_pa = 0;                // c_b
+  double friction_angle_deg = 0;         // phi_b, with the layer's weight
+  double gravity = 9.81;                 // m/s^2, through the layer's thickness
+};
+
 struct RelaxationDefaults {
   static constexpr double tolerance = 1e-7;
   static constexpr std::int64_t max_steps = 200000;
@@ -95,6 +103,9 @@ struct Deck {
   // [run]
   std::string name;
   bool plane_strain = false;
+  // run.view = "plan": the mesh is the layer seen from above, run.thickness its thickness h,
+  // on the substrate below (doc/physics.md "Plan view"); "section" (the default) otherwise.
+  bool plan_view = false;
   double thickness_m = 1.0;
   double end_time_s = 0;
   double output_interval_s = 0;  // between frames
@@ -119,6 +130,8 @@ struct Deck {
   std::vector<MoistureBoundaryDeck> moisture_boundaries;
   double crack_exchange_coefficient = 0;  // h_c, kg/(m^2 s)
   double crack_air_moisture = 0;          // w_e in cracks
+
+  std::optional<SubstrateDeck> substrate;  // only in plan view
 
   std::vector<CrackSegmentDeck> cracks;
   std::vector<MechanicsBoundaryDeck> mechanics_boundaries;

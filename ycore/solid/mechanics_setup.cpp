@@ -11,6 +11,7 @@
 #include "ycore/contact/contact_setup.h"
 #include "ycore/input/input_error.h"
 #include "ycore/solid/stable_step.h"
+#include "ycore/solid/substrate.h"
 #include "ycore/solid/strength_heterogeneity.h"
 #include "ycore/state/build_state.h"
 
@@ -261,9 +262,11 @@ void init_mechanics(State& s, const Deck& deck) {
   set_joint_data(s, deck);
   set_constraints(s, deck);
   init_contact(s.nodes, s.joints, s.material_names, deck, s.contact);
+  init_substrate(deck, s.triangles, s.materials, nn, s.substrate);
   s.ownership = partition_for_threads(s.triangles, s.joints, s.materials, kOwnershipSlots);
-  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s.triangles, s.joints, mech, s.contact, s.materials, s.nodes);
-  mech.step_s = stable_mechanics_step(s.nodes, s.triangles, s.joints, mech, s.contact, s.materials, deck.mechanics_safety);
+  if (deck.node_mass_scaling) scale_node_masses_to_common_step(s.triangles, s.joints, mech, s.contact, s.substrate, s.materials, s.nodes);
+  mech.step_s = stable_mechanics_step(s.nodes, s.triangles, s.joints, mech, s.contact, s.substrate, s.materials,
+                                     deck.mechanics_safety);
   mech.roundoff_net2 = roundoff_net2(s);
   const auto [x_min, x_max] = std::minmax_element(s.nodes.x0.begin(), s.nodes.x0.end());
   const auto [y_min, y_max] = std::minmax_element(s.nodes.y0.begin(), s.nodes.y0.end());

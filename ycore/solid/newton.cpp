@@ -7,6 +7,7 @@
 
 #include "ycore/solid/joint_work.h"
 #include "ycore/solid/stiffness_model.h"
+#include "ycore/solid/substrate.h"
 #include "ycore/state/stage_timing.h"
 
 namespace ydry {
@@ -175,7 +176,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
     // The force passes of the line search book their own stages; the rest is "solve".
     StageClock model_clock;
-    const Eigen::SparseMatrix<double> K_solid = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free);
+    const Eigen::SparseMatrix<double> K_solid = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free) +
+                                                substrate_tangent(n, s.substrate, free);
     metric.scale = K_solid.diagonal().sum() / metric.mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);
     const Undo undo(n, s.joints, s.contact);

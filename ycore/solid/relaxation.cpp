@@ -44,6 +44,7 @@
 #include "ycore/solid/newton.h"
 #include "ycore/solid/numerical_failure.h"
 #include "ycore/solid/solid_forces.h"
+#include "ycore/solid/substrate.h"
 #include "ycore/state/blocked_sum.h"
 #include "ycore/state/stage_timing.h"
 
@@ -258,6 +259,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   // At the round-off floor the ratio measures nothing (a solid at rest has no forces).
   if (measures.net2 > mech.roundoff_net2) mech.worst_residual = std::max(mech.worst_residual, result.residual);
   commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size());
+  commit_substrate_slide(s.nodes, s.ownership, s.substrate);
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.
   const double rate = coupling_dt > 0.0 ? 1.0 / coupling_dt : 0.0;
@@ -287,6 +289,7 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
     // keeps the damage, though it unloads before the coupling step ends.
     StageClock cracking;
     result.joints_broken += commit_joint_damage(s.nodes, s.ownership, s.materials, s.joints);
+    commit_substrate_slide(s.nodes, s.ownership, s.substrate);
     cracking.lap(s.wall.cracking);
   }
   result.residual = measures.ratio();

@@ -2,6 +2,7 @@
 
 #include "ycore/solid/element_forces.h"
 #include "ycore/solid/joint_forces.h"
+#include "ycore/solid/substrate.h"
 #include "ycore/state/blocked_sum.h"
 #include "ycore/state/stage_timing.h"
 
@@ -52,6 +53,7 @@ ForceMeasures compute_forces(State& s, double dt, FrictionUpdate friction, bool 
                              const VelocityUpdate* move_first) {
   StageClock clock;
   const double power_before = element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes, move_first);
+  add_substrate_forces(s.substrate, s.ownership, s.nodes);
   clock.lap(s.wall.elements);
   joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, dt);
   clock.lap(s.wall.joints);

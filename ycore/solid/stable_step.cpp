@@ -8,7 +8,8 @@
 namespace ydry {
 
 std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, const Joints& jt,
-                                         const Mechanics& mech, const Contact& c, const std::vector<MaterialModel>& materials) {
+                                         const Mechanics& mech, const Contact& c, const Substrate& substrate,
+                                         const std::vector<MaterialModel>& materials) {
   const double thickness = mech.thickness_m;
   const double contact = contact_stiffness_bound(mech, c);  // any corner may come to lie on a crack face
   std::vector<double> bound(n.size(), 0.0);
@@ -30,24 +31,24 @@ std::vector<double> node_stiffness_bound(const Nodes& n, const Triangles& tri, c
         const index_t js = n.joint_slot[2 * (i + a) + slot];
         if (js != kNoIndex) k += materials[jt.law[js / 4]].penalty * thickness;
       }
-      bound[i + a] = k + contact;
+      bound[i + a] = k + contact + (substrate.present() ? substrate.stiffness[i + a] : 0.0);
     }
   }
   return bound;
 }
 
 double stable_mechanics_step(const Nodes& n, const Triangles& tri, const Joints& jt, const Mechanics& mech,
-                             const Contact& c,
+                             const Contact& c, const Substrate& substrate,
                              const std::vector<MaterialModel>& materials, double safety) {
-  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, materials);
+  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, substrate, materials);
   double omega2_max = 0.0;
   for (std::size_t i = 0; i < bound.size(); ++i) omega2_max = std::max(omega2_max, bound[i] / n.m[i]);
   return omega2_max > 0.0 ? safety * 2.0 / std::sqrt(omega2_max) : 1.0;
 }
 
 void scale_node_masses_to_common_step(const Triangles& tri, const Joints& jt, const Mechanics& mech, const Contact& c,
-                                      const std::vector<MaterialModel>& materials, Nodes& n) {
-  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, materials);
+                                      const Substrate& substrate, const std::vector<MaterialModel>& materials, Nodes& n) {
+  const std::vector<double> bound = node_stiffness_bound(n, tri, jt, mech, c, substrate, materials);
   std::vector<double> omega2;
   for (std::size_t i = 0; i < bound.size(); ++i)
     if (bound[i] > 0.0) omega2.push_back(bound[i] / n.m[i]);

@@ -259,6 +259,19 @@ struct Mechanics {
   double gravity_work_J = 0;              // work of gravity since t = 0
 };
 
+// The substrate under a layer seen in plan view (doc/physics.md "Plan view"): every node is
+// held to the base over its tributary area by an elastic shear traction, capped where it
+// slides (adhesion plus friction under the layer's weight). Empty in a vertical section.
+struct Substrate {
+  // constant, [nodes]
+  std::vector<double> stiffness;      // N/m: k_b times the tributary area
+  std::vector<double> cap;            // N: (c_b + tan(phi_b) rho g h) times the tributary area
+  // history, [nodes]: where the node's traction is zero, from its initial position: the slide
+  // committed at the last equilibrium (as the contact's friction slip)
+  std::vector<double> slide_x, slide_y;
+  bool present() const { return !stiffness.empty(); }
+};
+
 struct State {
   Nodes nodes;
   Triangles triangles;
@@ -268,6 +281,7 @@ struct State {
   WaterBalance water;
   Mechanics mechanics;
   Contact contact;
+  Substrate substrate;
   std::vector<MechanicsBoundary> mechanics_boundaries;
   // constant
   Ownership ownership;                                     // the threads' ranges (ownership.h)

@@ -57,6 +57,10 @@ void for_each_history_field(S& s, Field&& field) {
     field(prefix + "reaction_y", s.mechanics_boundaries[b].reaction_y);
     field(prefix + "work_J", s.mechanics_boundaries[b].work_J);
   }
+  if (s.substrate.present()) {  // a plan view's (its deck, and so the checkpoint's)
+    field("substrate.slide_x", s.substrate.slide_x);
+    field("substrate.slide_y", s.substrate.slide_y);
+  }
   field("contact.pair_node", s.contact.pair_node);
   field("contact.pair_edge", s.contact.pair_edge);
   field("contact.pair_slip", s.contact.pair_slip);
