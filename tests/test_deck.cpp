@@ -194,6 +194,11 @@ TEST_CASE("each class of deck error exits 2 naming file, line and key", "[deck]"
        "deck.toml:4: run.gravity: in plan view gravity acts through the layer's thickness"},
       {"an unknown view", "name = \"t\"", "name = \"t\"\nview = \"oblique\"", "",
        "deck.toml:3: run.view: \"oblique\" is not one of"},
+      {"drying through the face of a vertical section", "on = \"top\"", "on = \"face\"", "",
+       "deck.toml:19: moisture.boundary[0].on: a vertical section has no face to dry through"},
+      {"a fixed moisture on the face", "name = \"t\"", "name = \"t\"\nview = \"plan\"",
+       "--set 'moisture.boundary=[{on=\"face\",type=\"fixed\",value=0.1}]'",
+       "moisture.boundary[0].type: a fixed moisture on the face would hold the whole layer at it"},
   };
   for (const Case& c : cases) {
     ydry_test::TempDir dir;

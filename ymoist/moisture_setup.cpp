@@ -61,6 +61,26 @@ void append_crack_face_terms(const MoistureMesh& mesh, const Deck& deck, std::ve
   }
 }
 
+// The face of a layer seen in plan view (on = "face"): each moisture node over its tributary
+// area, a third of each of its triangles' (of a material with moisture), in the plane: the
+// boundary's law per unit area of the layer's top (doc/physics.md "Plan view").
+void append_face_terms(const MoistureMesh& mesh, const Deck& deck, const MoistureBoundaryDeck& bc, index_t moisture_nodes,
+                       std::vector<Term>& terms) {
+  std::vector<double> area(std::size_t(moisture_nodes), 0.0);
+  for (index_t t = 0; t < index_t(mesh.triangles.size()); ++t) {
+    if (!deck.materials.at(mesh.material_names[mesh.triangles.material[t]]).has_moisture()) continue;
+    for (int a = 0; a < 3; ++a) area[mesh.nodes.mnode[corner_node(t, a)]] += mesh.triangles.area0[t] / 3.0;
+  }
+  for (index_t mn = 0; mn < moisture_nodes; ++mn) {
+    if (!(area[mn] > 0.0)) continue;
+    if (bc.type == MoistureBcType::flux)
+      terms.push_back({mn, MoistureTermKind::flux, area[mn], bc.rate_kg_m2_s,
+                       bc.has_residual ? bc.residual : -std::numeric_limits<double>::infinity()});
+    else
+      terms.push_back({mn, MoistureTermKind::exchange, area[mn], bc.coefficient, bc.air_moisture});
+  }
+}
+
 // The fixed values and the flux and exchange terms of the deck's [[moisture.boundary]]
 // entries and of the crack faces, on the current moisture nodes.
 void add_boundary_terms(const MoistureMesh& mesh, const Deck& deck, MoistureNodes& m) {
@@ -68,6 +88,10 @@ void add_boundary_terms(const MoistureMesh& mesh, const Deck& deck, MoistureNode
   std::vector<Term> terms;
   m.fixed_w.assign(nm, std::numeric_limits<double>::quiet_NaN());
   for (const MoistureBoundaryDeck& bc : deck.moisture_boundaries) {
+    if (bc.on == kFaceBoundary) {
+      append_face_terms(mesh, deck, bc, nm, terms);
+      continue;
+    }
     const std::vector<index_t>& pairs = boundary_nodes(mesh.boundary_edges, bc.on, bc.where);
     bool touches_moisture = false;
     for (std::size_t k = 0; k < pairs.size(); k += 2) {

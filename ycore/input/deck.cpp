@@ -107,11 +107,15 @@ MaterialDeck read_material(TableReader r, const std::string& name) {
   return m;
 }
 
-MoistureBoundaryDeck read_moisture_boundary(TableReader r) {
+MoistureBoundaryDeck read_moisture_boundary(TableReader r, const Deck& d) {
   MoistureBoundaryDeck b;
   b.on = r.string("on", {}, std::nullopt);
   b.where = r.where("on");
+  if (b.on == kFaceBoundary && !d.plan_view)
+    r.error("on", "a vertical section has no face to dry through: \"face\" needs run.view = \"plan\"");
   const std::string type = r.string("type", {"flux", "fixed", "exchange"}, std::nullopt);
+  if (b.on == kFaceBoundary && type == "fixed")
+    r.error("type", "a fixed moisture on the face would hold the whole layer at it: give a flux or an exchange");
   // Keys that belong to another type are errors: a user who wrote them expects an effect.
   const auto reject = [&](std::initializer_list<const char*> keys) {
     for (const char* k : keys)
@@ -144,7 +148,7 @@ void read_moisture(TableReader r, Deck& d, const Origin& file) {
   if (toml::array* arr = r.table_array("boundary")) {
     for (std::size_t i = 0; i < arr->size(); ++i)
       d.moisture_boundaries.push_back(read_moisture_boundary(
-          TableReader(*arr->get(i)->as_table(), "moisture.boundary[" + std::to_string(i) + "]", file)));
+          TableReader(*arr->get(i)->as_table(), "moisture.boundary[" + std::to_string(i) + "]", file), d));
   }
   TableReader cracks(r.subtable("cracks"), "moisture.cracks", file);
   d.crack_exchange_coefficient = cracks.number("exchange_coefficient", kNonNegative, 0.0);

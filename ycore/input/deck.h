@@ -50,6 +50,9 @@ struct InterfaceDeck {
 
 enum class MoistureBcType { flux, fixed, exchange };
 
+// The `on` of a [[moisture.boundary]] on the top face of a layer seen in plan view.
+inline const std::string kFaceBoundary = "face";
+
 struct MoistureBoundaryDeck {
   std::string on;
   std::string where;         // "FILE:LINE: moisture.boundary[i].on", for errors found against the mesh
