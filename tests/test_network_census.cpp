@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
+#include "tests/test_support.h"
 #include "ycore/driver/setup.h"
 #include "ycrack/network_census.h"
 
@@ -100,4 +102,34 @@ TEST_CASE("the network census finds the cells, voids and junctions of a network 
     else want = {180, 135, 45};                       // -90, 90, -135
     for (int k = 0; k < 3; ++k) CHECK(std::fabs(j.angles[k] - want[k]) <= 1e-9);
   }
+}
+
+TEST_CASE("a plan-view run writes its network at every row and its cells and junctions at every frame, "
+          "the same after a restart", "[census][planview]") {
+  // The shear-lag strip cut by hand along its middle both ways: four cells, one junction of
+  // four branches at right angles, 0.205 m of crack.
+  ydry_test::TempDir dir;
+  const std::string deck = YDRY_SOURCE_DIR "/verification/shear_lag/shear_lag.toml";
+  const std::string sets = " --quiet --set run.end_time=4 --set run.output_interval=2 --set solver.max_coupling_step=1 "
+                           "--set 'cracks=[{from=[0.1,0.0],to=[0.1,0.005]},{from=[0.0,0.0025],to=[0.2,0.0025]}]'";
+  const auto whole = ydry_test::run_ydry(deck + " -o " + dir.file("whole") + sets + " --checkpoint-every-steps 2");
+  INFO(whole.output);
+  REQUIRE(whole.exit_code == 0);
+  const std::string network = ydry_test::read_text(dir.file("whole/network.csv"));
+  const std::string cells = ydry_test::read_text(dir.file("whole/cells.csv"));
+  const std::string junctions = ydry_test::read_text(dir.file("whole/junctions.csv"));
+  // A row and a frame at 0, 2 and 4 s (run.series_interval is the output interval).
+  CHECK(std::count(network.begin(), network.end(), '\n') == 1 + 3);
+  CHECK(std::count(cells.begin(), cells.end(), '\n') == 1 + 3 * 4);
+  CHECK(network.find("\n4,4,") != std::string::npos);
+  CHECK(network.find(",0.20499999999999999,") != std::string::npos);
+  CHECK(junctions.find("\n4,0.10000000000000001,0.0025000000000000001,other,4,90 90 90 90\n") != std::string::npos);
+  // Restarted from coupling step 2: the same files, bit for bit.
+  std::filesystem::copy(dir.file("whole"), dir.file("restarted"), std::filesystem::copy_options::recursive);
+  const auto restarted = ydry_test::run_ydry("--restart " + dir.file("restarted/checkpoints/shear_lag_000002.chk") + " --quiet");
+  INFO(restarted.output);
+  REQUIRE(restarted.exit_code == 0);
+  for (const char* file : {"network.csv", "cells.csv", "junctions.csv"})
+    CHECK(ydry_test::read_text(dir.file(std::string("restarted/") + file)) ==
+          ydry_test::read_text(dir.file(std::string("whole/") + file)));
 }

@@ -14,6 +14,7 @@
 #include "ycore/output/reactions_csv.h"
 #include "ycrack/cracks_csv.h"
 #include "ycrack/network_census.h"
+#include "ycrack/network_csv.h"
 #include "ycrack/surface_profile.h"
 
 namespace ydry {
@@ -67,6 +68,10 @@ RunSession::RunSession(const RunOptions& options)
   cracks_csv_ = {outdir_ + "/cracks.csv", kCracksCsvHeader, record_.cracks_rows};
   surface_csv_ = {outdir_ + "/surface.csv", kSurfaceCsvHeader, record_.surface_rows};
   reactions_csv_ = {outdir_ + "/reactions.csv", kReactionsCsvHeader, record_.reactions_rows};
+  network_ = deck_.plan_view && deck_.mechanics;
+  network_csv_ = {outdir_ + "/network.csv", kNetworkCsvHeader, record_.network_rows};
+  cells_csv_ = {outdir_ + "/cells.csv", kCellsCsvHeader, record_.cells_rows};
+  junctions_csv_ = {outdir_ + "/junctions.csv", kJunctionsCsvHeader, record_.junctions_rows};
   // surface.csv profiles the boundary named "top", the soil's free surface.
   const auto top = state_.boundary_edges.find("top");
   if (deck_.mechanics && top != state_.boundary_edges.end()) surface_edges_ = &top->second;
@@ -96,16 +101,29 @@ void RunSession::write_files_of_checkpoint() {
     cracks_csv_.write();
   }
   if (surface_edges_) surface_csv_.write();
+  if (network_)
+    for (const CsvTable* table : {&network_csv_, &cells_csv_, &junctions_csv_}) table->write();
   write_summary(record_.finished, deck_.mechanics ? take_crack_census(state_, deck_.crack_width_threshold_m).closed : 0);
 }
 
 void RunSession::write_row(bool completed) {
   const State& s = state_;
+  // A plan view's network at every row (doc/outputs.md "network.csv"); its cells and
+  // junctions at every frame.
+  const NetworkCensus network = network_ ? take_network_census(s.nodes, s.triangles, s.joints, s.materials,
+                                                               s.material_names.size())
+                                         : NetworkCensus{};
+  if (network_) network_csv_.append(network_csv_row(s.time_s, network));
   if (s.time_s >= double(record_.next_frame) * deck_.output_interval_s * (1.0 - 1e-12) || completed) {
     // The fragments the broken joints cut the solid into, for ParaView to colour.
     write_frame(frames_, s, s.time_s,
-                deck_.mechanics ? fragment_cells(s.triangles, s.joints, s.materials) : std::vector<index_t>{});
+                network_ ? network.cell_of_triangle
+                         : deck_.mechanics ? fragment_cells(s.triangles, s.joints, s.materials) : std::vector<index_t>{});
     if (surface_edges_) surface_csv_.append(surface_csv_rows(s.time_s, surface_profile(s.nodes, *surface_edges_)));
+    if (network_) {
+      cells_csv_.append(cells_csv_rows(s.time_s, network));
+      junctions_csv_.append(junctions_csv_rows(s.time_s, network));
+    }
     record_.next_frame = std::uint64_t(std::lround(std::floor(s.time_s / deck_.output_interval_s * (1.0 + 1e-12)))) + 1;
   }
   const CrackCensus census = deck_.mechanics ? take_crack_census(s, deck_.crack_width_threshold_m) : CrackCensus{};
@@ -145,6 +163,9 @@ std::string RunSession::write_checkpoint() {
   record_.frame_times = frames_.times;
   record_.cracks_rows = cracks_csv_.rows;
   record_.surface_rows = surface_csv_.rows;
+  record_.network_rows = network_csv_.rows;
+  record_.cells_rows = cells_csv_.rows;
+  record_.junctions_rows = junctions_csv_.rows;
   record_.reactions_rows = reactions_csv_.rows;
   const std::string path = checkpoint_path(outdir_, deck_.name, state_.coupling_steps);
   std::filesystem::create_directories(outdir_ + "/checkpoints");
@@ -199,7 +220,8 @@ void RunSession::finish() {
   progress_.finish(state_.time_s, state_.coupling_steps);
   log_end(log_, state_, deck_, progress_.wall_s(),
           outdir_ + "/" + deck_.name + ".pvd, series.csv, " + (deck_.mechanics ? "cracks.csv, reactions.csv, " : "") +
-              (surface_edges_ ? "surface.csv, " : "") + "summary.json, deck.toml, log.txt, " + final_checkpoint);
+              (surface_edges_ ? "surface.csv, " : "") + (network_ ? "network.csv, cells.csv, junctions.csv, " : "") +
+              "summary.json, deck.toml, log.txt, " + final_checkpoint);
 }
 
 int RunSession::run_to_end() {

@@ -57,6 +57,8 @@ class RunSession {
   std::vector<index_t> right_end_;      // corners whose x-displacement series.csv reports
   const std::vector<index_t>* surface_edges_ = nullptr;  // the edges surface.csv profiles; none: no file
   CsvTable cracks_csv_, surface_csv_, reactions_csv_;
+  bool network_ = false;  // a plan view with its solid: network.csv, cells.csv, junctions.csv
+  CsvTable network_csv_, cells_csv_, junctions_csv_;
   std::uint64_t checkpoint_steps_ = 0;  // coupling steps at the last checkpoint
   double checkpoint_wall_s_ = 0;        // and its wall time
 };

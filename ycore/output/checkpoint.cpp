@@ -17,6 +17,10 @@ namespace {
 // one (written before) restores it as 0, its value until the code that counts it ran.
 const std::set<std::string> kTotalsAddedToFormat1 = {"mechanics.newton_fallbacks", "mechanics.worst_residual",
                                                      "mechanics.friction_slide_relaxations"};
+// Record fields added after checkpoint format 1 was first written: the plan view's tables,
+// which a checkpoint written before (of a vertical section, which has none) restores empty.
+const std::set<std::string> kRecordFieldsAddedToFormat1 = {"record.network_rows", "record.cells_rows",
+                                                           "record.junctions_rows"};
 // The fields of the Newton chord matrix (state_fields.h) start so: they are as large as the
 // checkpoint holds, and an older checkpoint has none.
 constexpr const char* kChordFieldPrefix = "mechanics.chord_";
@@ -31,6 +35,9 @@ void for_each_record_field(R& r, Field&& field) {
   field("record.finished", r.finished);
   field("record.cracks_rows", r.cracks_rows);
   field("record.surface_rows", r.surface_rows);
+  field("record.network_rows", r.network_rows);
+  field("record.cells_rows", r.cells_rows);
+  field("record.junctions_rows", r.junctions_rows);
   field("record.frame_times", r.frame_times);
 }
 
@@ -198,7 +205,10 @@ void restore_state(State& s, const Checkpoint& c) {
 
 RunRecord checkpoint_record(const Checkpoint& c, const Deck& deck, const State& s) {
   RunRecord r;
-  for_each_record_field(r, [&](const std::string& name, auto& value) { c.take(name, value); });
+  for_each_record_field(r, [&](const std::string& name, auto& value) {
+    if (kRecordFieldsAddedToFormat1.count(name) && !c.fields.count(name)) return;  // an older checkpoint: none
+    c.take(name, value);
+  });
   std::vector<double> rows;
   c.take("record.series", rows);
   std::string reactions;

@@ -34,6 +34,8 @@ struct RunRecord {
   Series series;                   // series.csv's rows
   std::string reactions_rows, cracks_rows, surface_rows;  // the rows of reactions.csv, cracks.csv and
                                    // surface.csv (CsvTable::rows)
+  std::string network_rows, cells_rows, junctions_rows;  // and of a plan view's network.csv,
+                                   // cells.csv and junctions.csv
   std::vector<double> frame_times; // s, the frames written
 };
 
