@@ -226,9 +226,10 @@ void read_substrate(TableReader r, Deck& d) {
             "a substrate holds a layer seen in plan view: set run.view = \"plan\"");
   SubstrateDeck b;
   b.stiffness_pa_m = r.optional_number("stiffness", kPositive);
-  b.adhesion_pa = r.number("adhesion", kNonNegative, 0.0);
-  b.friction_angle_deg = r.number("friction_angle", Range{0, 90, false, true}, 0.0);
-  b.gravity = r.number("gravity", kNonNegative, 9.81);
+  // The defaults are SubstrateDeck's own (deck.h).
+  b.adhesion_pa = r.number("adhesion", kNonNegative, b.adhesion_pa);
+  b.friction_angle_deg = r.number("friction_angle", Range{0, 90, false, true}, b.friction_angle_deg);
+  b.gravity = r.number("gravity", kNonNegative, b.gravity);
   r.finish();
   d.substrate = b;
 }
