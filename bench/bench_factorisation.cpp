@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
     const ydry::Deck deck = ydry::load_deck(argv[1], overrides);
     ydry::State s = ydry::prepare_state(deck);
     // The contact pairs and forces of the state as set up, which the links are made from.
-    ydry::compute_forces(s, 0.0, ydry::FrictionUpdate::at_equilibrium);
+    ydry::update_contact_pairs(s.nodes, s.ownership, s.contact);
+    ydry::compute_forces(s);
     const ydry::FreeComponents free = ydry::free_components(s.nodes, s.triangles, s.materials);
     const Matrix K = ydry::tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
     const std::vector<ydry::ContactLink> links =

@@ -13,6 +13,7 @@
 #include "ycore/contact/contact_geometry.h"
 #include "ycore/contact/contact_setup.h"
 #include "ycore/solid/relaxation.h"
+#include "ycore/solid/solid_forces.h"
 #include "ycore/driver/setup.h"
 #include "ycrack/node_sharing.h"
 
@@ -84,6 +85,20 @@ std::vector<double> contact_force_on_nodes(const State& s) {
   return f;
 }
 
+// The contact's phases as an explicit step takes them (explicit_step, ycore/solid/solid_forces.h):
+// the pairs, the slip advanced over dt, the forces, the work over dt, and the slip committed
+// unless it slides only at equilibrium.
+void contact_step(State& s, Contact& c, double dt, FrictionUpdate friction = FrictionUpdate::every_step) {
+  update_contact_pairs(s.nodes, s.ownership, c);
+  std::vector<double> before;
+  keep_contact_forces(c, before);
+  advance_friction_slip(s.nodes, dt, c);
+  contact_forces(s.nodes, s.triangles, s.mechanics, c, s.material_names.size(), c.pair_force);
+  book_contact_work(s.nodes, before, dt, c);
+  if (friction == FrictionUpdate::every_step)
+    commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.material_names.size(), c);
+}
+
 }  // namespace
 
 TEST_CASE("two triangles pressed through a broken joint's faces: p_n t g per corner, momentum conserved",
@@ -92,7 +107,7 @@ TEST_CASE("two triangles pressed through a broken joint's faces: p_n t g per cor
   State s = two_triangles(dir);
   const double depth = 1.0e-6;
   const Face face = press_through_broken_joint(s, depth);
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0);
+  contact_step(s, s.contact, 0.0);
   const std::vector<double> f = contact_force_on_nodes(s);
 
   double sum_x = 0, sum_y = 0, largest = 0;
@@ -126,10 +141,10 @@ TEST_CASE("sliding faces: the friction force opposes the slip and stops at tan(p
   const index_t corner = s.joints.node[3];
   const double normal = kPenalty * kThickness * depth, cap = std::tan(30.0 * M_PI / 180.0) * normal;
   // One step: the elastic slip of 1 nm is below the cap.
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 1e-6);
+  contact_step(s, s.contact, 1e-6);
   CHECK(pressed_corner_force(s, corner, face).second == Approx(-kPenalty * kThickness * 1e-9).epsilon(1e-6));
   for (int step = 0; step < 1000; ++step)  // 1 um more: sliding
-    contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 1e-6);
+    contact_step(s, s.contact, 1e-6);
   CHECK(pressed_corner_force(s, corner, face).second == Approx(-cap).epsilon(1e-9));
   CHECK(pressed_corner_force(s, corner, face).first == Approx(normal).epsilon(1e-9));
   CHECK(s.contact.work_J > 0.0);  // friction took work out of the sliding
@@ -166,8 +181,7 @@ TEST_CASE("a corner's friction spring stretches with its slip, on one edge or sh
     for (const std::size_t p : pairs) sum += std::hypot(c.pair_force[6 * p], c.pair_force[6 * p + 1]);
     return sum;
   };
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0,
-                 FrictionUpdate::at_equilibrium);
+  contact_step(s, s.contact, 0.0, FrictionUpdate::at_equilibrium);
   const auto before = carrying_pairs();
   std::map<index_t, double> friction_before;
   for (const auto& [corner, pairs] : before) friction_before[corner] = tangential(pairs);
@@ -175,8 +189,7 @@ TEST_CASE("a corner's friction spring stretches with its slip, on one edge or sh
   constexpr double move = 3e-9, kStep = 1.0;  // m, s
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     if (!s.nodes.constraint[i]) s.nodes.x[i] += move, s.nodes.vx[i] = move / kStep;
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), kStep,
-                 FrictionUpdate::at_equilibrium);
+  contact_step(s, s.contact, kStep, FrictionUpdate::at_equilibrium);
   const auto after = carrying_pairs();
   REQUIRE(after.size() == before.size());
   int checked = 0, shared = 0;
@@ -242,7 +255,7 @@ TEST_CASE("no contact force between triangles still tied by an intact joint, how
     State s = two_triangles(dir);
     const Face face = first_face(s);
     move_second_triangle(s, slide * face.length * face.tx - overlap * face.ty, slide * face.length * face.ty + overlap * face.tx);
-    contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size(), 0.0);
+    contact_step(s, s.contact, 0.0);
     for (const double f : contact_force_on_nodes(s)) CHECK(f == 0.0);
     // Both triangles' corners are surface corners (three outer edges each), yet no pair
     // joins corners of one tie group.
@@ -266,6 +279,34 @@ TEST_CASE("a block settling on a rigid base through contact is bitwise the same 
   CHECK(x[0] == x[1]);
   CHECK(work[0] == work[1]);
   CHECK(work[0] > 0.0);  // the contacts did carry the block
+}
+
+// doc/solver.md "One evaluation, in phases": evaluating the forces of a configuration changes
+// only the forces. The block at rest on its base (contacts pressing, friction stretched) is
+// shaken by a micron with velocities: an evaluation leaves every field of the history,
+// topology and totals as it was but the forces, and a second one gives the same forces.
+TEST_CASE("compute_forces writes the forces only, and the same forces again", "[contact]") {
+  State s = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
+  std::mt19937 rng(5);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    if (s.nodes.constraint[i]) continue;
+    s.nodes.x[i] += 1e-6 * unit(rng), s.nodes.y[i] += 1e-6 * unit(rng);
+    s.nodes.vx[i] = 1e-3 * unit(rng), s.nodes.vy[i] = 1e-3 * unit(rng);
+  }
+  update_contact_pairs(s.nodes, s.ownership, s.contact);
+  advance_friction_slip(s.nodes, 1e-3, s.contact);
+  ydry_test::Snapshot before = ydry_test::state_snapshot(s);
+  compute_forces(s);
+  ydry_test::Snapshot after = ydry_test::state_snapshot(s);
+  const std::vector<double> joint_force = s.joints.force, pair_force = s.contact.pair_force, fx = s.nodes.fx;
+  CHECK(std::count_if(pair_force.begin(), pair_force.end(), [](double f) { return f != 0.0; }) > 100);
+  for (const char* force : {"joints.force", "contact.pair_force"}) before.erase(force), after.erase(force);
+  CHECK(before == after);
+  compute_forces(s);
+  CHECK(ydry_test::same_bits(s.joints.force, joint_force));
+  CHECK(ydry_test::same_bits(s.contact.pair_force, pair_force));
+  CHECK(ydry_test::same_bits(s.nodes.fx, fx));
 }
 
 // The ratchet of an extrapolated start (ycore/solid/relaxation.cpp, predict_equilibrium): the block
@@ -399,7 +440,7 @@ TEST_CASE("a corner sliding across the junction of two edges hands its force fro
           "[contact]") {
   State s = setup_state(load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {}));
   Contact& c = s.contact;
-  contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, c, s.material_names.size(), 0.0);
+  contact_step(s, c, 0.0);
   // A free corner pressing the base's flat top: the block at rest.
   std::size_t pressing = c.pair_node.size();
   for (std::size_t p = 0; p < c.pair_node.size() && pressing == c.pair_node.size(); ++p)
@@ -425,7 +466,7 @@ TEST_CASE("a corner sliding across the junction of two edges hands its force fro
   int shared = 0;
   for (int k = 0; k <= kSteps; ++k) {
     s.nodes.x[corner] = junction + 0.1 * length - k * dx;
-    contact_forces(s.nodes, s.triangles, s.mechanics, s.ownership, c, s.material_names.size(), 0.0);
+    contact_step(s, c, 0.0);
     std::map<index_t, std::array<double, 2>> received;  // force on each node of the base
     double normal = 0.0, friction = 0.0;  // on the corner
     int carrying = 0;

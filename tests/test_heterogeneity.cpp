@@ -145,7 +145,7 @@ TEST_CASE("a single joint pulled apart peaks at factor x f_t, and slid at factor
         s.nodes.x[c] = s.nodes.x0[c] + d * dx;
         s.nodes.y[c] = s.nodes.y0[c] + d * dy;
       }
-      joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
+      joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, s.joints.force);
       // Traction on the first face: minus the force on its nodes 0, 1 along the motion, per area.
       const double* f = &s.joints.force[0];
       peak = std::max(peak, -((f[0] + f[2]) * dx + (f[1] + f[3]) * dy) / h0);  // thickness 1
@@ -168,7 +168,7 @@ TEST_CASE("heterogeneous joint forces and damage are bitwise the same on 1 and 2
   std::vector<std::uint8_t> broken[2];
   ydry_test::on_1_and_2_threads([&](int threads) {
     State t = s;
-    joint_forces(t.nodes, t.mechanics, t.ownership, t.materials, t.joints, 0.0);
+    joint_forces(t.nodes, t.mechanics, t.ownership, t.materials, t.joints, t.joints.force);
     commit_joint_damage(t.nodes, t.ownership, t.materials, t.joints);
     force[threads - 1] = t.joints.force;
     damage[threads - 1] = t.joints.damage;

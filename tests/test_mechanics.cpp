@@ -36,7 +36,7 @@ constexpr double kYoung = 1.0e6, kDensity = 1000.0;
 void net_forces(State& s) {
   element_forces(s.triangles, s.mechanics, s.ownership, s.materials, s.nodes);
   element_stresses(s.nodes, s.ownership, s.materials, s.triangles);
-  joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
+  joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, s.joints.force);
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     for (int k = 0; k < 2; ++k) {
       const index_t slot = s.nodes.joint_slot[2 * i + k];
@@ -263,7 +263,7 @@ TEST_CASE("the joint kernel's vector passes give the full traction law's forces,
     for (MaterialModel& m : s.materials) m.breakable = breakable;
     ydry_test::on_1_and_2_threads([&](int threads) {
       std::fill(s.joints.force.begin(), s.joints.force.end(), 0.0);
-      joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
+      joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, s.joints.force);
       std::size_t differing = 0;
       for (std::size_t j = 0; j < s.joints.size(); ++j) {
         double full[8];
@@ -582,7 +582,7 @@ TEST_CASE("the joint kernel computes every joint of a material with mechanics, r
       s.nodes.x[i] += 1e-6 * unit(rng);
       s.nodes.y[i] += 1e-6 * unit(rng);
     }
-    joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, 0.0);
+    joint_forces(s.nodes, s.mechanics, s.ownership, s.materials, s.joints, s.joints.force);
     std::size_t wrong = 0, carrying = 0;
     for (std::size_t j = 0; j < s.joints.size(); ++j) {
       double expected[8];

@@ -77,7 +77,7 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
     State t = at;
     t.contact.penalty_pa = 0.0;  // contact is not in the tangent
     t.mechanics.gravity_x = t.mechanics.gravity_y = 0.0;
-    compute_forces(t, 0.0, FrictionUpdate::at_equilibrium);
+    compute_forces(t);
     Eigen::VectorXd f(Eigen::Index(free.size()));
     for (std::size_t u = 0; u < free.size(); ++u) {
       const index_t c = free.component[u];

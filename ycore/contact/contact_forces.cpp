@@ -1,6 +1,6 @@
-// The contact force kernel (contact_forces.h). One pass over the corners that have candidate
-// pairs; each writes only its own pairs' forces and slips, so the result is the same on any
-// number of threads (doc/threading.md "Gather, not scatter").
+// The contact phases (contact_forces.h). Each is one pass over the corners that have candidate
+// pairs; each corner writes only its own pairs, so the result is the same on any number of
+// threads (doc/threading.md "Gather, not scatter").
 #include "ycore/contact/contact_forces.h"
 
 #include <algorithm>
@@ -27,43 +27,85 @@ bool idle_corner(const Nodes& n, const Contact& c, index_t first, index_t last) 
   return true;
 }
 
+// Calls visit(first pair, last pair, shares) for every corner update_contact_pairs found busy,
+// in blocks of 256 corners (the Peron deck has 3,528 contact corners, one block of the default
+// size, which one thread would do alone), and returns the sum the visits add to.
+template <class Visit>
+double for_each_busy_corner(const Contact& c, Visit&& visit) {
+  if (c.corner_busy.empty()) return 0.0;  // no pairs
+  const auto sum = blocked_sum<1, 256>(c.corner_busy.size(), [&](std::size_t k, std::array<double, 1>& s) {
+    if (c.corner_busy[k]) visit(c.node_pairs[k], c.node_pairs[k + 1], c.corner_shares[k], s[0]);
+  }, c.corner_owner_begin);
+  return sum[0];
+}
+
+// What the carrying pair k of corner i (contact_shares) pushes with: the penalty's normal
+// force with the dashpot on its approach, the friction's cap mu f_n, and the pull of the elastic
+// slip held within the cap.
+struct PairTraction {
+  double a = 0, b = 0;  // the corner's shares of the edge's ends e and f
+  double stiffness = 0, normal = 0, cap = 0, tangential = 0;
+  bool sticks = true;
+};
+PairTraction pair_traction(const Nodes& n, const Triangles& tri, const Contact& c, std::size_t material_count,
+                           double half_penalty, const ContactShares& carrying, int k) {
+  const EdgeProjection& at = carrying.at[k];
+  const index_t i = c.pair_node[carrying.pair[k]], e = c.pair_edge[carrying.pair[k]], f = next_corner(e);
+  PairTraction t;
+  t.stiffness = carrying.weight[k] * corner_stiffness(c, half_penalty, i);
+  t.b = std::clamp(at.along, 0.0, 1.0), t.a = 1.0 - t.b;
+  const double vx = n.vx[i] - t.a * n.vx[e] - t.b * n.vx[f], vy = n.vy[i] - t.a * n.vy[e] - t.b * n.vy[f];
+  // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
+  // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
+  // is zero at rest, so equilibria do not depend on it.
+  const double mass = std::max(n.m[i], 0.5 * (n.m[e] + n.m[f]));
+  const double approach = vx * at.ty - vy * at.tx;  // < 0: closing
+  const double damping = 2.0 * c.damping_ratio;
+  t.normal = std::max(0.0, -t.stiffness * at.gap - damping * std::sqrt(t.stiffness * mass) * approach);
+  // Coulomb friction as an elastic slip: the spring pulls at most mu f_n.
+  t.cap = friction_coefficient(c, tri, material_count, i, e) * t.normal;
+  t.tangential = -t.stiffness * c.pair_slip[carrying.pair[k]];
+  t.sticks = friction_sticks(t.tangential, t.cap);
+  if (!t.sticks) t.tangential = std::copysign(t.cap, t.tangential);
+  return t;
+}
+
+// The power of pair p's forces on the velocities of its three nodes.
+double pair_power(const Nodes& n, const Contact& c, const double* force, index_t p) {
+  const index_t receivers[3] = {c.pair_node[p], c.pair_edge[p], next_corner(c.pair_edge[p])};
+  double sum_fv = 0.0;
+  for (int k = 0; k < 3; ++k) sum_fv += force[2 * k] * n.vx[receivers[k]] + force[2 * k + 1] * n.vy[receivers[k]];
+  return sum_fv;
+}
+
 }  // namespace
 
-void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Ownership& ownership,
-                    Contact& c, std::size_t material_count, double dt, FrictionUpdate friction) {
+void update_contact_pairs(const Nodes& n, const Ownership& ownership, Contact& c) {
   if (c.penalty_pa <= 0.0) return;
   if (contact_pairs_stale(n, c)) build_contact_pairs(n, ownership, c);
-  const double half_penalty = 0.5 * c.penalty_pa * mech.thickness_m;
-  const double damping = 2.0 * c.damping_ratio;
   const std::size_t corners = c.node_pairs.size() - 1;
-  // Blocks of 256 corners: the Peron deck has 3,528 contact corners, one block of the
-  // default size, which one thread would do alone. Only the contacts' work is summed.
-  const auto work = blocked_sum<1, 256>(corners, [&](std::size_t k, std::array<double, 1>& sum) {
+  c.corner_busy.resize(corners);
+  c.corner_shares.resize(corners);
+  // Most corners (seven in ten of the Peron deck's) are idle: the phases would only find them
+  // apart, with nothing to carry, book or commit.
+  for_each_owned(c.corner_owner_begin, corners, [&](std::size_t k) {
     const index_t first = c.node_pairs[k], last = c.node_pairs[k + 1];
-    // Most corners (seven in ten of the Peron deck's): the pass below would only find them apart
-    // and book zero work; skipping them leaves every bit as it was.
-    if (idle_corner(n, c, first, last)) return;
+    c.corner_busy[k] = !idle_corner(n, c, first, last);
+    if (c.corner_busy[k]) c.corner_shares[k] = contact_shares(n, c, c.pair_node[first], first, last);
+  });
+}
+
+void advance_friction_slip(const Nodes& n, double dt, Contact& c) {
+  if (c.penalty_pa <= 0.0) return;
+  for_each_busy_corner(c, [&](index_t first, index_t last, const ContactShares& carrying, double&) {
     const index_t i = c.pair_node[first];
-    const ContactShares carrying = contact_shares(n, c, i, first, last);
-    // Work done on the contacts over the step: the trapezoid of the forces before and after.
-    const auto power = [&](index_t p) {
-      const double* force = &c.pair_force[6 * std::size_t(p)];
-      const index_t receivers[3] = {i, c.pair_edge[p], next_corner(c.pair_edge[p])};
-      double sum_fv = 0.0;
-      for (int k = 0; k < 3; ++k) sum_fv += force[2 * k] * n.vx[receivers[k]] + force[2 * k + 1] * n.vy[receivers[k]];
-      return sum_fv;
+    const auto carries = [&](index_t p) {
+      return (carrying.count > 0 && carrying.pair[0] == p) || (carrying.count > 1 && carrying.pair[1] == p);
     };
     // The friction slip is the corner's: when its contact passes from one edge to the next
     // (every corner of a conforming interface sits on a junction of two edges), the slip of
     // the pair it touched before passes to the pairs that take the contact over and have none,
     // projected on their edges. A corner out of contact has none.
-    const auto carries = [&](index_t p) {
-      return (carrying.count > 0 && carrying.pair[0] == p) || (carrying.count > 1 && carrying.pair[1] == p);
-    };
-    for (index_t p = first; p < last; ++p) {
-      sum[0] -= 0.5 * power(p) * dt;
-      for (int d = 0; d < 6; ++d) c.pair_force[6 * std::size_t(p) + d] = 0.0;
-    }
     for (int k = 0; k < carrying.count; ++k) {
       if (c.pair_slip[carrying.pair[k]] != 0.0) continue;
       for (index_t p = first; p < last; ++p) {
@@ -75,48 +117,64 @@ void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech,
     }
     for (index_t p = first; p < last; ++p)
       if (!carries(p)) c.pair_slip[p] = 0.0;
-
-    const double stiffness_of_corner = corner_stiffness(c, half_penalty, i);
+    // The slip stretches with the relative tangential motion.
     for (int k = 0; k < carrying.count; ++k) {
-      const index_t active = carrying.pair[k];
       const EdgeProjection& at = carrying.at[k];
-      const index_t e = c.pair_edge[active], f = next_corner(e);
-      const double stiffness = carrying.weight[k] * stiffness_of_corner;
-      const double b = std::clamp(at.along, 0.0, 1.0), a = 1.0 - b;  // shares of e and f
+      const index_t e = c.pair_edge[carrying.pair[k]], f = next_corner(e);
+      const double b = std::clamp(at.along, 0.0, 1.0), a = 1.0 - b;
       const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
-      // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
-      // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
-      // is zero at rest, so equilibria do not depend on it.
-      const double mass = std::max(n.m[i], 0.5 * (n.m[e] + n.m[f]));
-      const double approach = vx * at.ty - vy * at.tx;  // < 0: closing
-      const double normal = std::max(0.0, -stiffness * at.gap - damping * std::sqrt(stiffness * mass) * approach);
-      // Coulomb friction as an elastic slip: the spring stretches with the relative tangential
-      // motion and pulls at most mu f_n; it slides, keeping the stretch at the cap, at every
-      // step or only at equilibrium (FrictionUpdate).
-      double& slip = c.pair_slip[active];
-      slip += (vx * at.tx + vy * at.ty) * dt;
-      const double cap = friction_coefficient(c, tri, material_count, i, e) * normal;
-      double tangential = -stiffness * slip;
-      if (!friction_sticks(tangential, cap)) {
-        tangential = std::copysign(cap, tangential);
-        if (friction == FrictionUpdate::every_step) slip = -tangential / stiffness;
-      }
-      const double fx = normal * at.ty + tangential * at.tx, fy = -normal * at.tx + tangential * at.ty;
-      double* force = &c.pair_force[6 * std::size_t(active)];
-      force[0] = fx, force[1] = fy;
-      force[2] = -a * fx, force[3] = -a * fy;
-      force[4] = -b * fx, force[5] = -b * fy;
-      sum[0] -= 0.5 * power(active) * dt;
+      c.pair_slip[carrying.pair[k]] += (vx * at.tx + vy * at.ty) * dt;
     }
-  }, c.corner_owner_begin);
-  c.work_J += work[0];
+  });
 }
 
-// A force evaluation of zero length: nothing moves, no work is booked, and every slip past its
-// cap slides back to it.
-void commit_friction_slip(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Ownership& ownership,
-                          Contact& c, std::size_t material_count) {
-  contact_forces(n, tri, mech, ownership, c, material_count, 0.0, FrictionUpdate::every_step);
+void contact_forces(const Nodes& n, const Triangles& tri, const Mechanics& mech, const Contact& c,
+                    std::size_t material_count, std::vector<double>& pair_force) {
+  if (c.penalty_pa <= 0.0) return;
+  const double half_penalty = 0.5 * c.penalty_pa * mech.thickness_m;
+  for_each_busy_corner(c, [&](index_t first, index_t last, const ContactShares& carrying, double&) {
+    std::fill(&pair_force[6 * std::size_t(first)], &pair_force[6 * std::size_t(last)], 0.0);
+    for (int k = 0; k < carrying.count; ++k) {
+      const EdgeProjection& at = carrying.at[k];
+      const PairTraction t = pair_traction(n, tri, c, material_count, half_penalty, carrying, k);
+      const double fx = t.normal * at.ty + t.tangential * at.tx, fy = -t.normal * at.tx + t.tangential * at.ty;
+      double* force = &pair_force[6 * std::size_t(carrying.pair[k])];
+      force[0] = fx, force[1] = fy;
+      force[2] = -t.a * fx, force[3] = -t.a * fy;
+      force[4] = -t.b * fx, force[5] = -t.b * fy;
+    }
+  });
+}
+
+void keep_contact_forces(const Contact& c, std::vector<double>& force_before) {
+  force_before.resize(c.pair_force.size());
+  for_each_busy_corner(c, [&](index_t first, index_t last, const ContactShares&, double&) {
+    std::copy(&c.pair_force[6 * std::size_t(first)], &c.pair_force[6 * std::size_t(last)],
+              &force_before[6 * std::size_t(first)]);
+  });
+}
+
+void book_contact_work(const Nodes& n, const std::vector<double>& force_before, double dt, Contact& c) {
+  if (c.penalty_pa <= 0.0 || dt == 0.0) return;
+  // The trapezoid of the forces before and after the step: the terms of the forces before in
+  // pair order, then those after in the carrying pairs' (the sum's bits follow its order).
+  c.work_J += for_each_busy_corner(c, [&](index_t first, index_t last, const ContactShares& carrying, double& work) {
+    for (index_t p = first; p < last; ++p) work -= 0.5 * pair_power(n, c, &force_before[6 * std::size_t(p)], p) * dt;
+    for (int k = 0; k < carrying.count; ++k)
+      work -= 0.5 * pair_power(n, c, &c.pair_force[6 * std::size_t(carrying.pair[k])], carrying.pair[k]) * dt;
+  });
+}
+
+void commit_friction_slip(const Nodes& n, const Triangles& tri, const Mechanics& mech, std::size_t material_count,
+                          Contact& c) {
+  if (c.penalty_pa <= 0.0) return;
+  const double half_penalty = 0.5 * c.penalty_pa * mech.thickness_m;
+  for_each_busy_corner(c, [&](index_t, index_t, const ContactShares& carrying, double&) {
+    for (int k = 0; k < carrying.count; ++k) {
+      const PairTraction t = pair_traction(n, tri, c, material_count, half_penalty, carrying, k);
+      if (!t.sticks) c.pair_slip[carrying.pair[k]] = -t.tangential / t.stiffness;
+    }
+  });
 }
 
 }  // namespace ydry

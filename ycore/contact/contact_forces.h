@@ -1,4 +1,4 @@
-// Penalty contact with Coulomb friction between the surfaces of the solid: the force kernel
+// Penalty contact with Coulomb friction between the surfaces of the solid: its phases
 // (contact_forces.cpp; doc/physics.md "Contact and friction").
 //
 // Surfaces are the triangle edges with no joint (the mesh boundary, faces between two
@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "ycore/state/state.h"
 
@@ -39,19 +40,40 @@ enum class FrictionUpdate {
   at_equilibrium,
 };
 
-// Contact forces at the current positions into contact.pair_force (gathered per node through
-// contact.gather_offset/gather_entry), the friction slip advanced by the relative velocity
-// x dt, and the work done on the contacts over the step into contact.work_J. Runs the broad
-// phase first when a surface corner has moved more than the buffer (build_contact_pairs).
-// Reads the nodes, the triangles' materials, the thickness (mechanics) and the ownership
-// table; contact.tan_friction is [material_count^2].
+// The phases of contact in one evaluation (doc/solver.md "One evaluation, in phases"), in the
+// order the solvers call them. Each reads the nodes' positions (and velocities where it says),
+// the triangles' materials, the thickness (mechanics) and contact.tan_friction,
+// [material_count^2].
+
+// The pairs at the current positions: the broad phase where a surface corner has moved more
+// than the buffer since the last (build_contact_pairs; the pairs that continue keep their slip
+// and last force), then each corner's carrying pairs (contact.corner_busy, corner_shares),
+// which the phases below read. A corner clearly outside every edge it is paired with, with no
+// force or slip on its pairs (seven in ten of the Peron deck's), is idle: no phase takes it.
+void update_contact_pairs(const Nodes& nodes, const Ownership& ownership, Contact& contact);
+
+// The pair forces book_contact_work reads (those of the corners not idle) into force_before,
+// before the forces change.
+void keep_contact_forces(const Contact& contact, std::vector<double>& force_before);
+
+// The trial slip along the solver's path: each carrying pair's slip stretched by the corner's
+// relative tangential velocity x dt, and handed over from pair to pair with the contact.
+void advance_friction_slip(const Nodes& nodes, double dt, Contact& contact);
+
+// The contact forces at the current positions, velocities (the dashpot) and slips into
+// pair_force (contact.pair_force; gathered per node through contact.gather_offset and
+// gather_entry). The friction's pull is capped at mu f_n; the slip is not changed.
 void contact_forces(const Nodes& nodes, const Triangles& triangles, const Mechanics& mechanics,
-                    const Ownership& ownership, Contact& contact, std::size_t material_count, double dt,
-                    FrictionUpdate friction = FrictionUpdate::every_step);
+                    const Contact& contact, std::size_t material_count, std::vector<double>& pair_force);
+
+// The work done on the contacts over a step of dt at the nodes' velocities, the trapezoid of
+// force_before (keep_contact_forces) and contact.pair_force, into contact.work_J.
+void book_contact_work(const Nodes& nodes, const std::vector<double>& force_before, double dt, Contact& contact);
 
 // Slides every friction slip past its cap back to it, the caps those of the current positions
-// and velocities: the end of a quasi-static relaxation. The arguments are contact_forces'.
+// and velocities: at the end of a quasi-static relaxation, or after every step of a dynamic
+// run (FrictionUpdate).
 void commit_friction_slip(const Nodes& nodes, const Triangles& triangles, const Mechanics& mechanics,
-                          const Ownership& ownership, Contact& contact, std::size_t material_count);
+                          std::size_t material_count, Contact& contact);
 
 }  // namespace ydry

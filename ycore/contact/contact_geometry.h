@@ -24,12 +24,6 @@ inline double friction_coefficient(const Contact& c, const Triangles& tri, std::
 // slip where it does not; the Newton links give it its spring where it does.
 inline bool friction_sticks(double slip_pull, double cap) { return !(std::fabs(slip_pull) > cap); }
 
-// A corner against one edge: where it projects (0..1 from the edge's first corner) and how
-// far it lies outside (negative: inside the edge's triangle), with the edge's unit tangent.
-struct EdgeProjection {
-  double along = 0, gap = 0, length = 0, tx = 0, ty = 0;
-};
-
 // Corner i against edge e -> next_corner(e) of a CCW triangle.
 inline EdgeProjection project(const Nodes& n, index_t i, index_t e) {
   const index_t f = next_corner(e);
@@ -85,16 +79,11 @@ inline bool faces_edge(const Nodes& n, const Contact& c, index_t i, const EdgePr
   return false;
 }
 
-// The pairs that carry a corner's contact and their shares: of the edges it touches, the one
-// it lies least deep in (the surface it came through); where the corner is within the taper
-// of that edge's end, also the least deep other edge it touches nearer that edge's opposite
-// end (the next edge across a junction). Shares over 1 together are scaled to 1.
-struct ContactShares {
-  int count = 0;
-  index_t pair[2] = {0, 0};
-  EdgeProjection at[2];
-  double weight[2] = {0, 0};
-};
+// The pairs that carry a corner's contact and their shares (ContactShares, state.h): of the
+// edges it touches, the one it lies least deep in (the surface it came through); where the
+// corner is within the taper of that edge's end, also the least deep other edge it touches
+// nearer that edge's opposite end (the next edge across a junction). Shares over 1 together
+// are scaled to 1.
 inline ContactShares contact_shares(const Nodes& n, const Contact& c, index_t i, index_t first, index_t last) {
   ContactShares s;
   for (index_t p = first; p < last; ++p) {

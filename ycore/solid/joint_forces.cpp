@@ -15,7 +15,7 @@
 // are copied into a second set of arrays, over which the whole law (softened_traction, with
 // ydry's own exp in z(D)) runs in vector registers; each joint that neither could take (its
 // material cannot break; a point has no shear strength) is done with the scalar law
-// (joint_nodal_forces), broken joints are zeroed, and every joint's work and forces are stored.
+// (joint_nodal_forces), broken joints are zeroed, and every joint's forces are stored.
 // The vector laws do the same operations in the same order as the full law where they apply,
 // and this file is compiled without FMA contraction (CMakeLists.txt), so the result is the full
 // law's, bit for bit (tests/test_mechanics.cpp).
@@ -237,29 +237,19 @@ void take_softened(const SoftenedChunk& d, ChunkForces& out) {
   }
 }
 
-// Work over the step by the trapezoid of the forces before and after it (exact for a linear
-// spring, so a vibrating joint books no spurious work), then the new forces; the full law
-// where the chunk says so. Broken joints carry nothing and take no work.
-void store_chunk(const Nodes& n, const Mechanics& mech, const std::vector<MaterialModel>& materials, Joints& jt,
-                 std::size_t first, int count, const ChunkForces& c, double dt) {
+// The chunk's forces into `force`, the full law where the chunk says so. Broken joints carry
+// nothing.
+void store_chunk(const Nodes& n, const Mechanics& mech, const std::vector<MaterialModel>& materials, const Joints& jt,
+                 std::size_t first, int count, const ChunkForces& c, std::vector<double>& force) {
   for (int i = 0; i < count; ++i) {
     const std::size_t j = first + std::size_t(i);
-    double* f = &jt.force[8 * j];
-    if (c.pass[i] == JointPass::broken) {
+    double* f = &force[8 * j];
+    if (c.pass[i] == JointPass::broken)
       for (int k = 0; k < 8; ++k) f[k] = 0.0;
-      continue;
-    }
-    double fresh[8];
-    if (c.pass[i] == JointPass::scalar)
-      joint_nodal_forces(n, jt, mech, materials, j, fresh);
+    else if (c.pass[i] == JointPass::scalar)
+      joint_nodal_forces(n, jt, mech, materials, j, f);
     else
-      for (int k = 0; k < 8; ++k) fresh[k] = c.fresh[k][i];
-    const index_t* node = &jt.node[4 * j];
-    double power = 0.0;
-    for (int k = 0; k < 4; ++k)
-      power += 0.5 * ((f[2 * k] + fresh[2 * k]) * n.vx[node[k]] + (f[2 * k + 1] + fresh[2 * k + 1]) * n.vy[node[k]]);
-    jt.work[j] -= power * dt;
-    for (int k = 0; k < 8; ++k) f[k] = fresh[k];
+      for (int k = 0; k < 8; ++k) f[k] = c.fresh[k][i];
   }
 }
 
@@ -291,7 +281,7 @@ void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::v
 }
 
 void joint_forces(const Nodes& n, const Mechanics& mech, const Ownership& ownership,
-                  const std::vector<MaterialModel>& materials, Joints& jt, double dt) {
+                  const std::vector<MaterialModel>& materials, const Joints& jt, std::vector<double>& force) {
   const double thickness = mech.thickness_m, curve_area = softening_curve_area();
   const std::size_t nj = jt.size();
   const std::vector<index_t>& runs = jt.mechanical_runs;
@@ -313,7 +303,7 @@ void joint_forces(const Nodes& n, const Mechanics& mech, const Ownership& owners
         take_pre_peak(jt, materials, first, pre_peak, forces, softened);
         softened_forces(softened, thickness, curve_area);
         take_softened(softened, forces);
-        store_chunk(n, mech, materials, jt, first, count, forces, dt);
+        store_chunk(n, mech, materials, jt, first, count, forces, force);
       }
     }
   }

@@ -1,5 +1,5 @@
-// The joint kernel: the forces of the cohesive joints on their nodes and the work done on them
-// (joint_forces.cpp; doc/physics.md "Joints").
+// The joint kernel: the forces of the cohesive joints on their nodes (joint_forces.cpp;
+// doc/physics.md "Joints"); the work done on them is booked by joint_work.h.
 #pragma once
 
 #include <cstddef>
@@ -12,12 +12,12 @@ namespace ydry {
 // Joints per pass of the joint kernel's vectorised pre-peak law (joint_forces.cpp).
 constexpr int kJointChunk = 256;
 
-// Joint forces into joints.force, and the work done on them over the last step (the
-// trapezoid of the forces before and after it, times velocities x dt) into joints.work.
-// Broken joints carry nothing: their faces meet through contact (ycore/contact/contact_forces.h).
-// Reads the mechanics' thickness.
+// The joints' forces at the nodes' positions with their committed damage, into `force`
+// (joints.force: [8 * joints]). Broken joints carry nothing: their faces meet through contact
+// (ycore/contact/contact_forces.h). Only the joints of a material with mechanics are written
+// (Joints::mechanical_runs); the others' forces are 0 for good. Reads the mechanics' thickness.
 void joint_forces(const Nodes& nodes, const Mechanics& mechanics, const Ownership& ownership,
-                  const std::vector<MaterialModel>& materials, Joints& joints, double dt);
+                  const std::vector<MaterialModel>& materials, const Joints& joints, std::vector<double>& force);
 
 // The forces of joint j on its nodes 0..3 (x, y) with the full traction law at its three
 // points, as joint_forces stores them: zero for a broken joint.

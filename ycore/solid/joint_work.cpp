@@ -29,4 +29,21 @@ void book_joint_work(const Nodes& n, const Mechanics& mech, const std::vector<Ma
   }
 }
 
+void book_joint_step_work(const Nodes& n, const std::vector<MaterialModel>& materials,
+                          const std::vector<double>& force_before, double dt, Joints& jt) {
+  if (dt == 0.0) return;
+#pragma omp parallel for schedule(static) if (jt.size() > parallel_minimum)
+  for (std::size_t j = 0; j < jt.size(); ++j) {
+    if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
+    const index_t* node = &jt.node[4 * j];
+    const double* before = &force_before[8 * j];
+    const double* after = &jt.force[8 * j];
+    double power = 0.0;
+    for (int k = 0; k < 4; ++k)
+      power += 0.5 * ((before[2 * k] + after[2 * k]) * n.vx[node[k]] +
+                      (before[2 * k + 1] + after[2 * k + 1]) * n.vy[node[k]]);
+    jt.work[j] -= power * dt;
+  }
+}
+
 }  // namespace ydry

@@ -1,5 +1,6 @@
-// The joints' work booked between two configurations (doc/solver.md "Quasi-static
-// equilibrium"): a phase of its own, called by the equilibrium solvers once a relaxation ends.
+// The joints' work, booked by phases of their own (doc/solver.md "One evaluation, in phases"):
+// over an explicit step from the forces at its two ends, or along the straight path between two
+// configurations once a Newton relaxation ends.
 #pragma once
 
 #include <vector>
@@ -14,5 +15,12 @@ namespace ydry {
 // nodes' positions, the thickness and the materials.
 void book_joint_work(const Nodes& nodes, const Mechanics& mechanics, const std::vector<MaterialModel>& materials,
                      const std::vector<double>& x_from, const std::vector<double>& y_from, Joints& joints);
+
+// Adds to joints.work the work done on each intact joint of a material with mechanics over a
+// step of dt at the nodes' velocities: the trapezoid of force_before (its forces before the
+// step) and joints.force (after it), exact for a linear spring, so that a vibrating joint books
+// no spurious work.
+void book_joint_step_work(const Nodes& nodes, const std::vector<MaterialModel>& materials,
+                          const std::vector<double>& force_before, double dt, Joints& joints);
 
 }  // namespace ydry

@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 
+#include "ycore/contact/contact_forces.h"
 #include "ycore/solid/joint_work.h"
 #include "ycore/solid/stiffness_model.h"
 #include "ycore/solid/substrate.h"
@@ -33,19 +34,18 @@ constexpr int kOpeningRounds = 3;
 constexpr int kChordSteps = 8;
 constexpr double kChordContraction = 0.25;
 
-// What a trial step changes beyond the positions, kept to undo a refused one.
+// What a trial step changes beyond the positions, kept to undo a refused one: the joints'
+// forces, and the contact's pairs, slips, forces and work.
 struct Undo {
-  std::vector<double> x, y, joint_force, joint_work;
+  std::vector<double> x, y, joint_force;
   Contact contact;
-  Undo(const Nodes& n, const Joints& jt, const Contact& c)
-      : x(n.x), y(n.y), joint_force(jt.force), joint_work(jt.work), contact(c) {}
-  void restore(Nodes& n, Joints& jt, Contact& c) const {
-    n.x = x, n.y = y, jt.force = joint_force, jt.work = joint_work, c = contact;
-  }
+  Undo(const Nodes& n, const Joints& jt, const Contact& c) : x(n.x), y(n.y), joint_force(jt.force), contact(c) {}
+  void restore(Nodes& n, Joints& jt, Contact& c) const { n.x = x, n.y = y, jt.force = joint_force, c = contact; }
 };
 
-// Moves the free components by du from `from`, as a velocity du over a unit pseudo-step, so that
-// the next force evaluation (dt = 1) moves the friction slip and books the work over it.
+// Moves the free components by du from `from`, as a velocity du over a unit pseudo-step: the
+// friction slip advances by it (forces_after_move), and FIRE, where it takes over, steers
+// from the measures of that velocity.
 void move_by(const FreeComponents& free, const Eigen::VectorXd& du, const Undo& from, Nodes& n) {
   n.x = from.x, n.y = from.y;
   std::fill(n.vx.begin(), n.vx.end(), 0.0);
@@ -57,6 +57,20 @@ void move_by(const FreeComponents& free, const Eigen::VectorXd& du, const Undo& 
     else
       n.y[i] += du[Eigen::Index(u)], n.vy[i] = du[Eigen::Index(u)];
   }
+}
+
+// The forces where move_by left the nodes, in the phases of doc/solver.md "One evaluation, in
+// phases": the contact pairs updated, the friction slip advanced over the step of dt (1 after
+// move_by, 0 where nothing moved), the forces. The contact forces before it are left in
+// contact_before, for the work booked over a step that is kept (book_contact_work); the
+// joints' work is booked once the relaxation ends (book_joint_work).
+ForceMeasures forces_after_move(State& s, double dt, std::vector<double>& contact_before) {
+  StageClock clock;
+  update_contact_pairs(s.nodes, s.ownership, s.contact);
+  keep_contact_forces(s.contact, contact_before);
+  advance_friction_slip(s.nodes, dt, s.contact);
+  clock.lap(s.wall.contact);
+  return compute_forces(s);
 }
 
 // The free components' mass and the trust region's unit (mean diag K / diag M).
@@ -97,10 +111,12 @@ bool line_search(State& s, const FreeComponents& free, const Eigen::VectorXd& f,
   step = 1.0;
   for (int cut = 0; cut < kMaxCuts && out.iterations < cap; ++cut) {
     move_by(free, step * du, from, s.nodes);
-    const ForceMeasures trial = compute_forces(s, 1.0, FrictionUpdate::at_equilibrium);
+    std::vector<double> contact_before;
+    const ForceMeasures trial = forces_after_move(s, 1.0, contact_before);
     ++out.iterations;
     const double slope = -out_of_balance(free, s.nodes).dot(du);
     if (std::isfinite(trial.net2) && 0.5 * (slope0 + slope) <= kSufficientDecrease * slope0) {
+      book_contact_work(s.nodes, contact_before, 1.0, s.contact);
       out.measures = trial;
       return true;
     }
@@ -204,7 +220,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
       else if (step == 1.0) mu = std::max(mu / 10.0, kMinMu);
     }
     if (!accepted) {  // the forces of the state kept
-      out.measures = compute_forces(s, 0.0, FrictionUpdate::at_equilibrium);
+      std::vector<double> contact_before;
+      out.measures = forces_after_move(s, 0.0, contact_before);
       break;
     }
   }

@@ -35,10 +35,10 @@ struct NewtonOutcome {
 // lowered after each full step. Each accepted step moves the contacts' friction slip with the
 // displacement and books the contacts' work by the trapezoid over it. The joints' work is
 // booked between equilibria: from `joint_work`, the joints' work when the relaxation began,
-// along the straight path from mechanics.x_start, y_start to the state reached. A phase, like
-// relax: it writes what compute_forces writes. Stops unconverged after 100 force evaluations
-// (or controls.max_steps) or when mu grows beyond any use; the caller then relaxes on from the
-// state reached.
+// along the straight path from mechanics.x_start, y_start to the state reached. It writes the
+// positions, the forces, the contact's pairs, slips and work, and the joints' work. Stops
+// unconverged after 100 force evaluations (or controls.max_steps) or when mu grows beyond any
+// use; the caller then relaxes on from the state reached.
 NewtonOutcome newton_equilibrium(State& state, const RelaxationControls& controls, const ForceMeasures& start,
                                  const std::vector<double>& joint_work);
 

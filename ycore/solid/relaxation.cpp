@@ -217,7 +217,8 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   // The friction slides only at the equilibrium reached (FrictionUpdate::at_equilibrium), until
   // a relaxation has taken controls.slide_after steps (doc/solver.md "Friction that stalls").
   FrictionUpdate friction = FrictionUpdate::at_equilibrium;
-  ForceMeasures measures = compute_forces(s, dt, friction, fire_measures);
+  ForcesBefore before;
+  ForceMeasures measures = explicit_step(s, nullptr, dt, friction, fire_measures, before);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a relaxation");
   std::fill(n.vx.begin(), n.vx.end(), 0.0);  // quasi-static: every relaxation starts at rest
   std::fill(n.vy.begin(), n.vy.end(), 0.0);
@@ -246,7 +247,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
       ++mech.friction_slide_relaxations;
     }
     const VelocityUpdate update = fire_measures ? fire.next(measures) : viscous_update(damping, dt);
-    measures = compute_forces(s, update.step, friction, fire_measures, &update);
+    measures = explicit_step(s, &update, update.step, friction, fire_measures, before);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "relaxation step " + std::to_string(result.steps));
     if (measures.rayleigh_numerator > 0.0 && measures.twice_kinetic > 0.0)
@@ -258,7 +259,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   result.capped = !balanced(measures);
   // At the round-off floor the ratio measures nothing (a solid at rest has no forces).
   if (measures.net2 > mech.roundoff_net2) mech.worst_residual = std::max(mech.worst_residual, result.residual);
-  commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.ownership, s.contact, s.material_names.size());
+  commit_friction_slip(s.nodes, s.triangles, s.mechanics, s.material_names.size(), s.contact);
   commit_substrate_slide(s.nodes, s.ownership, s.substrate);
   finish_motion(s, result, coupling_dt);
   // The velocities of the moisture clock: displacement over the coupling step.
@@ -275,14 +276,15 @@ RelaxationResult move_dynamically(State& s, double coupling_dt) {
   const Mechanics& mech = s.mechanics;
   RelaxationResult result;
   // Forces at the start (the eigenstrain has changed); no motion yet, so no work booked.
-  ForceMeasures measures = compute_forces(s, 0.0, FrictionUpdate::every_step);
+  ForcesBefore before;
+  ForceMeasures measures = explicit_step(s, nullptr, 0.0, FrictionUpdate::every_step, false, before);
   if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "the start of a dynamic step");
   const std::int64_t substeps = std::max<std::int64_t>(1, std::int64_t(std::ceil(coupling_dt / mech.step_s)));
   const double dt = coupling_dt / double(substeps);
   for (std::int64_t k = 0; k < substeps && coupling_dt > 0.0; ++k) {
     move_driven_nodes(mech, s.nodes, dt, dt);
     const VelocityUpdate undamped = viscous_update(0.0, dt);
-    measures = compute_forces(s, dt, FrictionUpdate::every_step, false, &undamped);
+    measures = explicit_step(s, &undamped, dt, FrictionUpdate::every_step, false, before);
     ++result.steps;
     if (!std::isfinite(measures.net2)) report_non_finite_solid(s, "dynamic step " + std::to_string(result.steps));
     // In real time every state is one the solid passes through: a joint that passes its peak

@@ -183,6 +183,22 @@ inline std::uint64_t bonded_line_key(index_t a, index_t b) {
   return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
 }
 
+// A contact corner against one surface edge (project, ycore/contact/contact_geometry.h): where it
+// projects (0..1 from the edge's first corner) and how far it lies outside (negative: inside
+// the edge's triangle), with the edge's unit tangent.
+struct EdgeProjection {
+  double along = 0, gap = 0, length = 0, tx = 0, ty = 0;
+};
+
+// The (at most two) pairs that carry a corner's contact, where it projects on their edges, and
+// their shares of it (contact_shares, ycore/contact/contact_geometry.h).
+struct ContactShares {
+  int count = 0;
+  index_t pair[2] = {0, 0};
+  EdgeProjection at[2];
+  double weight[2] = {0, 0};
+};
+
 // Penalty contact between surface edges (doc/physics.md "Contact and friction"): node-to-edge
 // in both directions, Coulomb friction as an elastic slip capped at mu f_n.
 struct Contact {
@@ -213,6 +229,11 @@ struct Contact {
   std::vector<std::size_t> corner_owner_begin;  // the corners of each Ownership slot's nodes
   std::vector<index_t> gather_offset; // [nodes + 1] CSR into gather_entry: the pair forces a
   std::vector<index_t> gather_entry;  //   node receives, as 3 pair + slot (0 node, 1 a, 2 b)
+  // scratch of the positions where update_contact_pairs last ran, read by the contact phases
+  // at those positions (ycore/contact/contact_forces.h): per corner (node_pairs), whether the
+  // phases take it, and the pairs that carry its contact
+  std::vector<std::uint8_t> corner_busy;
+  std::vector<ContactShares> corner_shares;
   // totals
   double work_J = 0;                  // work done on the solid by contact forces since t = 0
   std::uint64_t builds = 0;           // broad phases run
