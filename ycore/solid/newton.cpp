@@ -224,6 +224,8 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
       out.measures = forces_after_move(s, 0.0, contact_before);
       break;
     }
+    // A Newton step of a large mesh can take seconds: the progress line hears of each.
+    if (controls.report && !balanced(out.measures)) controls.report(out.iterations, out.measures.ratio());
   }
   // A Newton step's matrix that brought the relaxation to its tolerance serves the next ones.
   if (out.converged && factorised.nonZeros() > 0) keep_chord_factor(factorised, free, newton_factor, s.mechanics);

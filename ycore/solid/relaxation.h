@@ -18,8 +18,9 @@
 
 namespace ydry {
 
-// Told, every kRelaxationReportSteps steps of a relaxation that runs on, its step count and
-// out-of-balance ratio (the progress line says a long relaxation is still at work).
+// Told, after every Newton step and every kRelaxationReportSteps explicit steps of a
+// relaxation that runs on, its step count (force evaluations) and out-of-balance ratio (the
+// progress line says a long relaxation is still at work).
 using RelaxationReport = std::function<void(std::int64_t steps, double residual)>;
 constexpr std::int64_t kRelaxationReportSteps = 1000;
 
