@@ -39,6 +39,20 @@ double for_each_busy_corner(const Contact& c, Visit&& visit) {
   return sum[0];
 }
 
+// Where the carrying pair k of a corner (contact_shares) meets its edge, as the shares a, b of
+// the edge's ends e and f, and the corner's velocity relative to that point.
+struct PairMotion {
+  index_t i, e, f;
+  double a, b, vx, vy;
+};
+PairMotion pair_motion(const Nodes& n, const Contact& c, const ContactShares& carrying, int k) {
+  PairMotion m;
+  m.i = c.pair_node[carrying.pair[k]], m.e = c.pair_edge[carrying.pair[k]], m.f = next_corner(m.e);
+  m.b = std::clamp(carrying.at[k].along, 0.0, 1.0), m.a = 1.0 - m.b;
+  m.vx = n.vx[m.i] - m.a * n.vx[m.e] - m.b * n.vx[m.f], m.vy = n.vy[m.i] - m.a * n.vy[m.e] - m.b * n.vy[m.f];
+  return m;
+}
+
 // What the carrying pair k of corner i (contact_shares) pushes with: the penalty's normal
 // force with the dashpot on its approach, the friction's cap mu f_n, and the pull of the elastic
 // slip held within the cap.
@@ -50,11 +64,12 @@ struct PairTraction {
 PairTraction pair_traction(const Nodes& n, const Triangles& tri, const Contact& c, std::size_t material_count,
                            double half_penalty, const ContactShares& carrying, int k) {
   const EdgeProjection& at = carrying.at[k];
-  const index_t i = c.pair_node[carrying.pair[k]], e = c.pair_edge[carrying.pair[k]], f = next_corner(e);
+  const PairMotion m = pair_motion(n, c, carrying, k);
+  const index_t i = m.i, e = m.e, f = m.f;
   PairTraction t;
   t.stiffness = carrying.weight[k] * corner_stiffness(c, half_penalty, i);
-  t.b = std::clamp(at.along, 0.0, 1.0), t.a = 1.0 - t.b;
-  const double vx = n.vx[i] - t.a * n.vx[e] - t.b * n.vx[f], vy = n.vy[i] - t.a * n.vy[e] - t.b * n.vy[f];
+  t.a = m.a, t.b = m.b;
+  const double vx = m.vx, vy = m.vy;
   // Penalty plus a dashpot on the normal approach (a fraction of critical for the moving
   // side's mass), never pulling: it takes the bounce out of a contact that closes fast and
   // is zero at rest, so equilibria do not depend on it.
@@ -119,11 +134,8 @@ void advance_friction_slip(const Nodes& n, double dt, Contact& c) {
       if (!carries(p)) c.pair_slip[p] = 0.0;
     // The slip stretches with the relative tangential motion.
     for (int k = 0; k < carrying.count; ++k) {
-      const EdgeProjection& at = carrying.at[k];
-      const index_t e = c.pair_edge[carrying.pair[k]], f = next_corner(e);
-      const double b = std::clamp(at.along, 0.0, 1.0), a = 1.0 - b;
-      const double vx = n.vx[i] - a * n.vx[e] - b * n.vx[f], vy = n.vy[i] - a * n.vy[e] - b * n.vy[f];
-      c.pair_slip[carrying.pair[k]] += (vx * at.tx + vy * at.ty) * dt;
+      const PairMotion m = pair_motion(n, c, carrying, k);
+      c.pair_slip[carrying.pair[k]] += (m.vx * carrying.at[k].tx + m.vy * carrying.at[k].ty) * dt;
     }
   });
 }
