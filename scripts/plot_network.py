@@ -61,8 +61,8 @@ def load(run):
     return network, at_last, last, kinds, angles, frame
 
 
-def fig_cells(frame, last, path):
-    fig, ax = plt.subplots(figsize=(7, 6.5))
+def draw_cells(ax, frame):
+    """The frame's solid on ax in mm, each cell in its own colour; returns the number of cells."""
     x = frame["x"]
     cell = frame["cell"].astype(int)
     shuffled = np.random.default_rng(1).permutation(cell.max() + 1)  # neighbours in different colours
@@ -71,7 +71,12 @@ def fig_cells(frame, last, path):
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.set_title(f"{cell.max() + 1} cells at t = {last:g} s")
+    return cell.max() + 1
+
+
+def fig_cells(frame, last, path):
+    fig, ax = plt.subplots(figsize=(7, 6.5))
+    ax.set_title(f"{draw_cells(ax, frame)} cells at t = {last:g} s")
     fig.tight_layout()
     fig.savefig(path, dpi=150)
     plt.close(fig)

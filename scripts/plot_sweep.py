@@ -14,7 +14,10 @@ writes into --out (default OUT/plots), per sweep NAME:
 
 The cracks counted are the sweep's `cracks`: `surface` (mouth on the top surface, as seen
 from above: the Peron sweeps) or `penetrating` (surface cracks that also reach the bottom of
-the layer), from cracks.csv. Runs not yet completed are shown as far as they went, and marked.
+the layer), from cracks.csv. A sweep of plan-view runs (`cracks = "network"`) is tabulated and
+drawn by its crack network instead (scripts/plot_sweep_network.py: NAME_networks.png,
+NAME_cell_area.png with the exponent of the mean cell area, NAME_table.csv and .md). Runs not
+yet completed are shown as far as they went, and marked.
 
     scripts/plot_sweep.py runs/sweeps
     scripts/plot_sweep.py runs/sweeps --out figures --sweep thickness --warp 3
@@ -28,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 import plot_run  # (save, frame_data, draw_solid, draw_cracks, MM, MINUTE: the run figures' drawing)
+import plot_sweep_network  # (the plan-view sweeps: cracks = "network")
 import sweep_plan  # (deck_digest: is a folder's run still its value's?)
 from plot_run import MINUTE, MM, plt
 
@@ -103,22 +107,26 @@ def run_figures(run, folder, kind, history):
 
 
 def load_sweep(out, sweep):
-    """Each entry of the sweep with its run (None when the folder holds no run yet), crack
-    history and table figures."""
+    """Each entry of the sweep with its run (None when the folder holds no run yet) and table
+    figures: of its cracks, with their history, or of a plan-view sweep's network."""
+    network = sweep["cracks"] == "network"
     rows = []
     for entry in sweep["entries"]:
         folder = out / entry["folder"]
-        row = {"value": entry["value"], "folder": entry["folder"], "run": None, "status": "not run"}
+        row = {"value": entry["value"], "folder": entry["folder"], "run": None, "status": "not run", "figures": None}
         deck = folder / "deck.toml"
         if "deck_digest" in entry and deck.is_file() and \
                 sweep_plan.deck_digest(deck.read_text()) != entry["deck_digest"]:
             row["status"] = "holds another deck's run: run the sweep again"
-        elif (folder / "summary.json").is_file() and (folder / "cracks.csv").is_file():
+        elif (folder / "summary.json").is_file() and (folder / ("network.csv" if network else "cracks.csv")).is_file():
             run = run_report.load_run(folder, "plot_sweep")
-            history = crack_history(run, sweep["cracks"])
             done = run["summary"]["completed"]
-            row.update(run=run, history=history, figures=run_figures(run, folder, sweep["cracks"], history), path=folder,
-                       status="completed" if done else f"unfinished, at {run['summary']['time_s']:g} s")
+            row.update(run=run, path=folder, status="completed" if done else f"unfinished, at {run['summary']['time_s']:g} s")
+            if network:
+                row["figures"] = plot_sweep_network.run_figures(folder)
+            else:
+                row["history"] = crack_history(run, sweep["cracks"])
+                row["figures"] = run_figures(run, folder, sweep["cracks"], row["history"])
         rows.append(row)
     return rows
 
@@ -227,7 +235,7 @@ def write_tables(sweep, rows, out):
         writer = csv.writer(f)
         writer.writerow(["value", "folder", "status"] + [key for key, _, _ in QUANTITIES])
         for row in rows:
-            figures = row.get("figures", {})
+            figures = row["figures"] or {}
             writer.writerow([row["value"], row["folder"], row["status"]]
                             + ["" if figures.get(key) is None else repr(figures[key]) for key, _, _ in QUANTITIES])
     unit = f" ({sweep['unit']})" if sweep["unit"] else ""
@@ -272,12 +280,18 @@ def main():
             continue
         rows = load_sweep(args.sweep, sweep)
         written = [out / f"{sweep['name']}_table.csv", out / f"{sweep['name']}_table.md"]
-        print(write_tables(sweep, rows, out))
-        if any(row["run"] is not None for row in rows):
-            written += [fig_patterns(sweep, rows, out / f"{sweep['name']}_patterns.png", args.warp),
-                        fig_evolution(sweep, rows, out / f"{sweep['name']}_width.png", "mean_width_m", "crack width", 1),
-                        fig_evolution(sweep, rows, out / f"{sweep['name']}_length.png", "mean_length_m",
-                                      "crack length", 2)]
+        if sweep["cracks"] == "network":
+            print(plot_sweep_network.write_tables(sweep, rows, out))
+            if any(row["run"] is not None for row in rows):
+                written += [plot_sweep_network.fig_networks(sweep, rows, value_text, out / f"{sweep['name']}_networks.png"),
+                            plot_sweep_network.fig_cell_area(sweep, rows, out / f"{sweep['name']}_cell_area.png")]
+        else:
+            print(write_tables(sweep, rows, out))
+            if any(row["run"] is not None for row in rows):
+                written += [fig_patterns(sweep, rows, out / f"{sweep['name']}_patterns.png", args.warp),
+                            fig_evolution(sweep, rows, out / f"{sweep['name']}_width.png", "mean_width_m", "crack width", 1),
+                            fig_evolution(sweep, rows, out / f"{sweep['name']}_length.png", "mean_length_m",
+                                          "crack length", 2)]
         print(f"plot_sweep: {', '.join(path.name for path in written)} in {out}\n")
     return 0
 

@@ -26,7 +26,8 @@ A sweep file (inputs/sweeps/README.md):
     axis = "E"                            # tables and plots: the value times scale, in unit
     unit = "MPa"
     scale = 1e-6
-    cracks = "surface"                    # the cracks plot_sweep.py counts: surface | penetrating
+    cracks = "surface"                    # what plot_sweep.py counts: surface | penetrating cracks, or
+                                          # network (plan-view runs: cells, junctions)
     figures = [25, 26, 27]                # the paper's patterns, width and length figures
     set = []                              # overrides of every run of the sweep
     values = [1.0e6, 4.0e6, 16.0e6]       # or, where a value needs overrides of its own:

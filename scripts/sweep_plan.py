@@ -17,7 +17,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "verification"))
 import ydry_case  # noqa: E402  (REPO)
 
 REPO = ydry_case.REPO
-CRACK_KINDS = ("surface", "penetrating")
+CRACK_KINDS = ("surface", "penetrating", "network")  # network: plan-view runs (plot_sweep_network.py)
 FILE_KEYS = {"name", "deck", "parameter", "axis", "unit", "scale", "cracks", "figures", "set", "values",
              "entries"}
 
