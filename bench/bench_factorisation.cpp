@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
     ydry::update_contact_pairs(s.nodes, s.ownership, s.contact);
     ydry::compute_forces(s);
     const ydry::FreeComponents free = ydry::free_components(s.nodes, s.triangles, s.materials);
-    const Matrix K = ydry::tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
+    const Matrix K = ydry::tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free,
+                                                   ydry::JointFrictionTangent::derived);
     const std::vector<ydry::ContactLink> links =
         ydry::contact_links(s.nodes, s.triangles, s.mechanics, s.contact, s.contact.buffer_m);
     Matrix A = ydry::model_tangent(K, links, ydry::links_in_contact(links), free);

@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include "tests/test_support.h"
 #include "ycore/driver/coupling.h"
 #include "ycore/driver/setup.h"
+#include "ycore/solid/joint_law.h"
 #include "ycore/solid/solid_forces.h"
 #include "ycore/solid/stiffness_model.h"
 #include "ycore/solid/tangent.h"
@@ -71,7 +74,8 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
   State s = setup_state(deck);
   advance_to(s, deck, 2000.0, coupling_step_limit(s, deck));
   const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
-  const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
+  const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free,
+                                                                JointFrictionTangent::derived);
   // The forces of the elements and joints alone, at the free components.
   const auto forces = [&](const State& at) {
     State t = at;
@@ -100,6 +104,55 @@ TEST_CASE("the tangent is the derivative of the element and joint forces: K du p
   }
   CHECK(error[1] < error[0]);
   CHECK(2.0 * error[1] - error[0] <= 1e-2);
+}
+
+TEST_CASE("the tangent holds a compressed joint's mode II strength, without the saddle that its derivative makes",
+          "[newton]") {
+  // A triangle of the block slid along a neighbour across their joint, pressed against it by
+  // the joint's peak opening and sheared to 1.5 times its mode II peak slip: every point of the
+  // joint past its peak under compression. Derived, the strength's rise with compression,
+  // tan(phi) times the normal stiffness, stands in the shear row alone, and symmetrised it gives
+  // the joint's nodes a negative stiffness of a few per cent of the penalty's; held, the block of
+  // those nodes stays positive definite (the shear's softening past its peak is gentle).
+  // Measured: the smallest eigenvalue over the largest, -0.0225 derived, +3.0e-4 held.
+  State s = prepare_state(drying_block({"materials.soil.breakable=true", "materials.soil.tensile_strength=1000.0",
+                                        "materials.soil.cohesion=2000.0", "materials.soil.friction_angle=30.0",
+                                        "materials.soil.gf_I=1.0", "materials.soil.gf_II=10.0"}));
+  const std::size_t j = s.joints.size() / 2;
+  const index_t* node = &s.joints.node[4 * j];
+  const MaterialModel& m = s.materials[s.joints.law[j]];
+  const JointKinematics before = joint_kinematics(s.nodes, node);
+  const double k = m.penalty / s.joints.length0[j], peak_opening = 2.0 * m.tensile_strength / k;
+  const double compression = k * peak_opening, peak_slip = 2.0 * (m.cohesion + compression * m.tan_friction) / k;
+  const double close = -peak_opening, slide = 1.5 * peak_slip;  // the first triangle's move along n and t
+  const double tx = before.ny, ty = -before.nx;  // the joint's axis (joint_frame: n = (-t_y, t_x))
+  const index_t first = triangle_of(node[0]);
+  for (int c = 0; c < 3; ++c) {
+    const index_t i = corner_node(first, c);
+    s.nodes.x[i] += close * before.nx + slide * tx;
+    s.nodes.y[i] += close * before.ny + slide * ty;
+  }
+  const JointKinematics moved = joint_kinematics(s.nodes, node);
+  REQUIRE(std::fabs(moved.opening[0] - before.opening[0] - close) < 1e-3 * peak_opening);
+  REQUIRE(std::fabs(std::fabs(moved.slip[0] - before.slip[0]) - slide) < 1e-3 * peak_slip);
+  const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
+  // The smallest eigenvalue of the block of the joint's free components over the largest.
+  const auto smallest_over_largest = [&](JointFrictionTangent friction) {
+    const Eigen::MatrixXd K(tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free, friction));
+    std::vector<Eigen::Index> rows;
+    for (int c = 0; c < 8; ++c)
+      if (const index_t u = free.unknown[2 * std::size_t(node[c / 2]) + c % 2]; u != kNoIndex) rows.push_back(u);
+    Eigen::MatrixXd block(rows.size(), rows.size());
+    for (std::size_t a = 0; a < rows.size(); ++a)
+      for (std::size_t b = 0; b < rows.size(); ++b) block(a, b) = K(rows[a], rows[b]);
+    const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(block).eigenvalues();
+    return eigenvalues.minCoeff() / eigenvalues.maxCoeff();
+  };
+  const double derived = smallest_over_largest(JointFrictionTangent::derived);
+  const double held = smallest_over_largest(JointFrictionTangent::held);
+  INFO("derived " << derived << ", held " << held);
+  CHECK(derived < -0.01);
+  CHECK(held > -1e-4);
 }
 
 TEST_CASE("a cracking run relaxed by Newton ends in a bitwise identical state on 1 and 2 threads",
@@ -163,7 +216,8 @@ TEST_CASE("the factorisations order by whichever of AMD and METIS fills the mesh
   // up: every joint intact), by the ordering.
   const auto fill = [](const State& s, const FreeComponents& free, auto ordering) {
     using Ordering = decltype(ordering);
-    const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free);
+    const Eigen::SparseMatrix<double> K = tangent_stiffness(s.nodes, s.triangles, s.joints, s.mechanics, s.materials, free,
+                                                                JointFrictionTangent::derived);
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Ordering> solver;
     solver.analyzePattern(K);
     return solver.matrixL().nestedExpression().nonZeros();

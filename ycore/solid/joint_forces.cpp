@@ -264,7 +264,8 @@ void joint_nodal_forces(const Nodes& n, const Joints& jt, const Mechanics& mech,
 }
 
 void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::vector<MaterialModel>& materials,
-                           std::size_t j, const double x[4], const double y[4], double out[8]) {
+                           std::size_t j, const double x[4], const double y[4], double out[8],
+                           const double* held_compression) {
   const MaterialModel& m = materials[jt.law[j]];
   if (jt.broken[j] || !m.mechanical) {
     for (int k = 0; k < 8; ++k) out[k] = 0.0;
@@ -273,11 +274,28 @@ void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::v
   const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
+  // The law with its friction angle moved into the cohesion, at the compression held.
+  MaterialModel held_law = m;
+  held_law.tan_friction = 0.0;
   joint_forces_with(f, h0, mech.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
-    const PointTraction t = cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
+    JointStrength held = strength;
+    if (held_compression) held.cohesion += held_compression[p] * m.tan_friction;
+    const PointTraction t = held_compression ? cohesive_traction(held_law, held, o, sl, jt.damage[3 * j + p])
+                                             : cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
     normal = t.normal, shear = t.shear;
     return 0.0;
   }, out);
+}
+
+void joint_point_compressions(const Joints& jt, const std::vector<MaterialModel>& materials, std::size_t j,
+                              const double x[4], const double y[4], double compression[3]) {
+  const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
+  const double k = materials[jt.law[j]].penalty / jt.length0[j];  // joint_strength's slope
+  for (int p = 0; p < 3; ++p) {
+    double o, s;
+    point_opening_slip(f, p, o, s);
+    compression[p] = o < 0.0 ? -k * o : 0.0;  // cohesive_traction's
+  }
 }
 
 void joint_forces(const Nodes& n, const Mechanics& mech, const Ownership& ownership,

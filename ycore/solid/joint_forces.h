@@ -23,9 +23,15 @@ void joint_forces(const Nodes& nodes, const Mechanics& mechanics, const Ownershi
 // points, as joint_forces stores them: zero for a broken joint.
 void joint_nodal_forces(const Nodes& nodes, const Joints& joints, const Mechanics& mechanics,
                         const std::vector<MaterialModel>& materials, std::size_t j, double out[8]);
-// The same with its nodes 0..3 at x, y (the equilibrium solver's tangent, tangent.h).
+// The same with its nodes 0..3 at x, y (the equilibrium solver's tangent, tangent.h). With
+// held_compression, the mode II strength c + sigma_n tan(phi) of point p (Fig. 2b) takes its
+// compression sigma_n (Pa) from held_compression[p] instead of from x, y.
 void joint_nodal_forces_at(const Joints& joints, const Mechanics& mechanics,
                            const std::vector<MaterialModel>& materials, std::size_t j, const double x[4],
-                           const double y[4], double out[8]);
+                           const double y[4], double out[8], const double* held_compression = nullptr);
+
+// The compression (Pa, 0 where open) at joint j's three points with its nodes 0..3 at x, y.
+void joint_point_compressions(const Joints& joints, const std::vector<MaterialModel>& materials, std::size_t j,
+                              const double x[4], const double y[4], double compression[3]);
 
 }  // namespace ydry

@@ -28,6 +28,10 @@ constexpr int kMaxActiveSetRounds = 8;
 // Rounds in which a link may open as well as close; after them links only close, so that a set
 // that alternates (it can, a penalty's model being no M-matrix) settles.
 constexpr int kOpeningRounds = 3;
+// A relaxation's tangent holds the joints' mode II strength at each step's compression
+// (JointFrictionTangent::held) until a step needs mu of this much or more; from the next step on
+// it takes the strength's rise as derived (doc/solver.md "The joints' friction in the tangent").
+constexpr double kDerivedFrictionMu = 1e-4;
 // Chord steps (the factor of the matrix the last Newton relaxation converged with) a relaxation
 // takes first, at most, each to lower the out-of-balance ratio to this share of the last's at
 // least; where one does not, they are undone and Newton starts as without them.
@@ -189,11 +193,17 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   double mu = kMinMu;
   out.converged = balanced(out.measures) || chord_steps(s, free, balanced, out);
   const std::int64_t cap = std::min<std::int64_t>(kMaxEvaluations, controls.max_steps) + out.iterations;
+  JointFrictionTangent friction = JointFrictionTangent::held;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
+    if (friction == JointFrictionTangent::held && mu >= kDerivedFrictionMu) {
+      friction = JointFrictionTangent::derived;
+      mu = kMinMu;
+    }
     // The force passes of the line search book their own stages; the rest is "solve".
     StageClock model_clock;
-    const Eigen::SparseMatrix<double> K_solid = tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free) +
-                                                substrate_tangent(n, s.substrate, free);
+    const Eigen::SparseMatrix<double> K_solid =
+        tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free, friction) +
+        substrate_tangent(n, s.substrate, free);
     metric.scale = K_solid.diagonal().sum() / metric.mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);
     const Undo undo(n, s.joints, s.contact);

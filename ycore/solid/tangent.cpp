@@ -56,7 +56,7 @@ FreeComponents free_components(const Nodes& n, const Triangles& tri, const std::
 
 Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& tri, const Joints& jt,
                                               const Mechanics& mech, const std::vector<MaterialModel>& materials,
-                                              const FreeComponents& free) {
+                                              const FreeComponents& free, JointFrictionTangent friction) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(36 * tri.size() + 64 * jt.size());  // at most (2 x corners)^2 a part
   for (std::size_t e = 0; e < tri.size(); ++e) {
@@ -74,10 +74,15 @@ Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& t
   }
   for (std::size_t j = 0; j < jt.size(); ++j) {
     if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
-    add_part_tangent<4>(&jt.node[4 * j], n, free, kRelativeStep * jt.length0[j],
-                        [&](const double* x, const double* y, double* f) {
-                          joint_nodal_forces_at(jt, mech, materials, j, x, y, f);
-                        }, entries);
+    const index_t* node = &jt.node[4 * j];
+    const double x0[4] = {n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]]};
+    const double y0[4] = {n.y[node[0]], n.y[node[1]], n.y[node[2]], n.y[node[3]]};
+    double compression[3];
+    const bool held = friction == JointFrictionTangent::held;
+    if (held) joint_point_compressions(jt, materials, j, x0, y0, compression);
+    add_part_tangent<4>(node, n, free, kRelativeStep * jt.length0[j], [&](const double* x, const double* y, double* f) {
+      joint_nodal_forces_at(jt, mech, materials, j, x, y, f, held ? compression : nullptr);
+    }, entries);
   }
   Eigen::SparseMatrix<double> K(Eigen::Index(free.size()), Eigen::Index(free.size()));
   K.setFromTriplets(entries.begin(), entries.end());
