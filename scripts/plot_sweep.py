@@ -228,38 +228,45 @@ def cell(row, key, factor):
     return f"{value:d}" if key == "crack_count" else f"{value * factor:.4g}"
 
 
-def write_tables(sweep, rows, out):
-    """NAME_table.csv (SI) and NAME_table.md (min, mm, definitions, trends); returns the Markdown."""
+def write_table(sweep, rows, out, quantities, what, cell_text, notes):
+    """NAME_table.csv (SI) and NAME_table.md, one row per value: `quantities` (column, heading,
+    factor to its unit), `what` the title's last words, cell_text(row, key, factor) a Markdown
+    cell, then the lines `notes`; returns the Markdown."""
     name = sweep["name"]
     with open(out / f"{name}_table.csv", "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["value", "folder", "status"] + [key for key, _, _ in QUANTITIES])
+        writer.writerow(["value", "folder", "status"] + [key for key, _, _ in quantities])
         for row in rows:
             figures = row["figures"] or {}
             writer.writerow([row["value"], row["folder"], row["status"]]
-                            + ["" if figures.get(key) is None else repr(figures[key]) for key, _, _ in QUANTITIES])
+                            + ["" if figures.get(key) is None else repr(figures[key]) for key, _, _ in quantities])
     unit = f" ({sweep['unit']})" if sweep["unit"] else ""
-    lines = [f"# Sweep {name}: {sweep['axis']}{unit}, {KIND_TEXT[sweep['cracks']]}", "",
-             f"| {sweep['axis']}{unit} | run | " + " | ".join(head for _, head, _ in QUANTITIES) + " |",
-             "|---" * (len(QUANTITIES) + 2) + "|"]
+    lines = [f"# Sweep {name}: {sweep['axis']}{unit}, {what}", "",
+             f"| {sweep['axis']}{unit} | run | " + " | ".join(head for _, head, _ in quantities) + " |",
+             "|---" * (len(quantities) + 2) + "|"]
     for row in rows:
-        cells = [cell(row, key, factor) for key, _, factor in QUANTITIES]
+        cells = [cell_text(row, key, factor) for key, _, factor in quantities]
         shown = f"{row['value'] * sweep['scale']:g}" if isinstance(row["value"], (int, float)) else row["value"]
         note = "" if row["status"] == "completed" else f" ({row['status']})"
         lines.append(f"| {shown} | {row['folder']}{note} | " + " | ".join(cells) + " |")
-    lines += ["", f"With larger {sweep['axis']}: " + "; ".join(f"{head.split(' (')[0]} {trend(rows, key)}"
-                                                           for key, head, _ in QUANTITIES) + ".", "",
-              "Definitions: the cracks counted are the rows of cracks.csv with `surface` 1"
-              + (" and `penetrating` 1" if sweep["cracks"] == "penetrating" else "")
-              + "; final: the last row; first crack: the first row time with one; mean initiation: the mean "
-              "over the final cracks of the row time each first appeared (cracks followed by their mouth x, "
-              "matched within two surface elements); stable from: the earliest "
-              f"row time from which on their mean width stays within {100 * run_report.STABLE_FRACTION:g} % "
-              "of its final value (not reached: only the last row is); widths are mouth openings, lengths "
-              "the summed lengths of a crack's broken joints."]
-    text = "\n".join(lines) + "\n"
+    text = "\n".join(lines + notes) + "\n"
     (out / f"{name}_table.md").write_text(text)
     return text
+
+
+def write_tables(sweep, rows, out):
+    """The crack sweeps' tables (write_table): in min and mm, with definitions and trends."""
+    notes = ["", f"With larger {sweep['axis']}: " + "; ".join(f"{head.split(' (')[0]} {trend(rows, key)}"
+                                                           for key, head, _ in QUANTITIES) + ".", "",
+             "Definitions: the cracks counted are the rows of cracks.csv with `surface` 1"
+             + (" and `penetrating` 1" if sweep["cracks"] == "penetrating" else "")
+             + "; final: the last row; first crack: the first row time with one; mean initiation: the mean "
+             "over the final cracks of the row time each first appeared (cracks followed by their mouth x, "
+             "matched within two surface elements); stable from: the earliest "
+             f"row time from which on their mean width stays within {100 * run_report.STABLE_FRACTION:g} % "
+             "of its final value (not reached: only the last row is); widths are mouth openings, lengths "
+             "the summed lengths of a crack's broken joints."]
+    return write_table(sweep, rows, out, QUANTITIES, KIND_TEXT[sweep["cracks"]], cell, notes)
 
 
 def main():
@@ -281,7 +288,8 @@ def main():
         rows = load_sweep(args.sweep, sweep)
         written = [out / f"{sweep['name']}_table.csv", out / f"{sweep['name']}_table.md"]
         if sweep["cracks"] == "network":
-            print(plot_sweep_network.write_tables(sweep, rows, out))
+            print(write_table(sweep, rows, out, plot_sweep_network.QUANTITIES, "the plan-view crack network",
+                              plot_sweep_network.cell, plot_sweep_network.table_notes(sweep, rows)))
             if any(row["run"] is not None for row in rows):
                 written += [plot_sweep_network.fig_networks(sweep, rows, value_text, out / f"{sweep['name']}_networks.png"),
                             plot_sweep_network.fig_cell_area(sweep, rows, out / f"{sweep['name']}_cell_area.png")]

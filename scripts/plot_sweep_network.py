@@ -7,10 +7,10 @@ Writes into the plots folder, per sweep NAME:
     NAME_cell_area.png  the mean cell area against the value on log-log axes, with the exponent
                         n of the least-squares line log A = n log v + c through the completed
                         runs (cell size proportional to the layer's thickness gives n = 2)
-    NAME_table.csv      per value: cells, mean cell area, crack intensity factor, crack length
-    NAME_table.md       per unit area, T, Y and other junctions, the T junctions' share; and n
+    NAME_table.csv      per value (plot_sweep.write_table): cells, mean cell area, crack
+    NAME_table.md       intensity factor, crack length per unit area, T, Y and other
+                        junctions, the T junctions' share; and n
 """
-import csv
 import math
 
 import numpy as np
@@ -98,31 +98,11 @@ def cell(row, key, factor):
     return f"{value:d}" if key in COUNTS else f"{value * factor:.4g}"
 
 
-def write_tables(sweep, rows, out):
-    """NAME_table.csv (SI) and NAME_table.md (mm^2, %, the exponent); returns the Markdown."""
-    name = sweep["name"]
-    with open(out / f"{name}_table.csv", "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["value", "folder", "status"] + [key for key, _, _ in QUANTITIES])
-        for row in rows:
-            figures = row["figures"] or {}
-            writer.writerow([row["value"], row["folder"], row["status"]]
-                            + ["" if figures.get(key) is None else repr(figures[key]) for key, _, _ in QUANTITIES])
-    unit = f" ({sweep['unit']})" if sweep["unit"] else ""
-    lines = [f"# Sweep {name}: {sweep['axis']}{unit}, the plan-view crack network", "",
-             f"| {sweep['axis']}{unit} | run | " + " | ".join(head for _, head, _ in QUANTITIES) + " |",
-             "|---" * (len(QUANTITIES) + 2) + "|"]
-    for row in rows:
-        shown = f"{row['value'] * sweep['scale']:g}"
-        note = "" if row["status"] == "completed" else f" ({row['status']})"
-        lines.append(f"| {shown} | {row['folder']}{note} | "
-                     + " | ".join(cell(row, key, factor) for key, _, factor in QUANTITIES) + " |")
+def table_notes(sweep, rows):
+    """The lines under the table (plot_sweep.write_table): the exponent and the definitions."""
     fit = area_exponent(rows)
-    lines += ["", ("Mean cell area against " + sweep["axis"] + ": A ~ " + sweep["axis"] + "^n with n = "
-                   + (f"{fit[0]:.3g}" if fit else "- (fewer than two completed runs with cells)")
-                   + ", the least-squares line through the completed runs on log-log axes."), "",
-              "Definitions: each figure is network.csv's last row (doc/outputs.md); the T share is T "
-              "junctions over all junctions."]
-    text = "\n".join(lines) + "\n"
-    (out / f"{name}_table.md").write_text(text)
-    return text
+    return ["", ("Mean cell area against " + sweep["axis"] + ": A ~ " + sweep["axis"] + "^n with n = "
+                 + (f"{fit[0]:.3g}" if fit else "- (fewer than two completed runs with cells)")
+                 + ", the least-squares line through the completed runs on log-log axes."), "",
+            "Definitions: each figure is network.csv's last row (doc/outputs.md); the T share is T "
+            "junctions over all junctions."]

@@ -97,16 +97,9 @@ def main():
         for kind in KINDS:
             files.append(Path(tmp) / f"{kind}.toml")
             files[-1].write_text(sweep_file(kind))
-        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "sweep.py"), *map(str, files), "--out", str(out),
-                               "--jobs", "2", "--threads", "1", "--ydry", str(args.ydry)], capture_output=True, text=True)
-        print(proc.stdout + proc.stderr)
-        if proc.returncode != 0:
-            return 1
-        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "plot_sweep.py"), str(out), "--out", str(plots)],
-                              capture_output=True, text=True)
-        print(proc.stdout + proc.stderr)
-        if proc.returncode != 0:
-            failures.append(f"plot_sweep.py exited {proc.returncode}")
+        failures += ydry_case.sweep_and_plot(files, out, plots, args.ydry)
+        if not (out / "sweep.json").is_file():
+            return ydry_case.failed(failures)
         failures += [f"{kind}_{name} not written" for kind in KINDS for name in FILES
                      if not (plots / f"{kind}_{name}").is_file()]
         manifest = json.loads((out / "sweep.json").read_text())["sweeps"]

@@ -15,7 +15,6 @@ cells' areas, measured as they are, halve). Exits 1 on any failure.
 import csv
 import math
 import re
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -50,16 +49,9 @@ def main():
     with tempfile.TemporaryDirectory(prefix="ydry_plot_sweep_network_") as tmp:
         out, plots, sweep = Path(tmp) / "out", Path(tmp) / "plots", Path(tmp) / "cut.toml"
         sweep.write_text(SWEEP)
-        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "sweep.py"), str(sweep), "--out", str(out),
-                               "--jobs", "2", "--threads", "1", "--ydry", str(args.ydry)], capture_output=True, text=True)
-        print(proc.stdout + proc.stderr)
-        if proc.returncode != 0:
-            return 1
-        proc = subprocess.run([sys.executable, str(REPO / "scripts" / "plot_sweep.py"), str(out), "--out", str(plots)],
-                              capture_output=True, text=True)
-        print(proc.stdout + proc.stderr)
-        if proc.returncode != 0:
-            failures.append(f"plot_sweep.py exited {proc.returncode}")
+        failures += ydry_case.sweep_and_plot([sweep], out, plots, args.ydry)
+        if not (out / "sweep.json").is_file():
+            return ydry_case.failed(failures)
         failures += [f"cut_{name} not written" for name in FILES if not (plots / f"cut_{name}").is_file()]
         if (plots / "cut_table.csv").is_file():
             with open(plots / "cut_table.csv", newline="") as f:

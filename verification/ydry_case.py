@@ -12,6 +12,7 @@ run_report.py.
 import argparse
 import json
 import subprocess
+import sys
 import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -80,6 +81,21 @@ def failed(failures):
     for failure in failures:
         print(f"FAIL: {failure}")
     return 1 if failures else 0
+
+
+def sweep_and_plot(sweep_files, out, plots, ydry):
+    """A script test's sweeps: scripts/sweep.py on the files into `out` (2 runs at a time, 1
+    thread each), then scripts/plot_sweep.py on `out` into `plots`, their output printed.
+    Returns the failures: [] where both exit 0."""
+    commands = [["sweep.py", *map(str, sweep_files), "--out", str(out), "--jobs", "2", "--threads", "1", "--ydry",
+                 str(ydry)], ["plot_sweep.py", str(out), "--out", str(plots)]]
+    for script, *arguments in commands:
+        proc = subprocess.run([sys.executable, str(REPO / "scripts" / script), *arguments], capture_output=True,
+                              text=True)
+        print(proc.stdout + proc.stderr)
+        if proc.returncode != 0:
+            return [f"{script} exited {proc.returncode}"]
+    return []
 
 
 def run_ydry(ydry, deck, outdir, overrides=()):
