@@ -3,7 +3,7 @@
 writing a checkpoint), resumes the interrupted ones from their checkpoints, and writes a SLURM
 script whose task body runs, or restarts, one run.
 
-A sweep file over run.end_time = 1000, 2000, 10000 and 16000 s of tests/data/sweep_strip.toml
+A sweep file over run.end_time = 1000, 2000, 20000 and 32000 s of tests/data/sweep_strip.toml
 (seconds of CPU each), two runs at a time:
 1. SIGINT while the last two runs are under way: sweep.py exits 130, no ydry process of the
    sweep is left, the first two runs are completed, the last two are not and hold a checkpoint;
@@ -37,7 +37,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "verification"))
 import ydry_case  # noqa: E402  (test_arguments, failed)
 
-END_TIMES = [1000, 2000, 10000, 16000]
+END_TIMES = [1000, 2000, 20000, 32000]
 SWEEP_FILE = f"""name = "strip"
 deck = "{REPO}/tests/data/sweep_strip.toml"
 parameter = "run.end_time"
@@ -146,7 +146,7 @@ def main():
         print(proc.stdout + proc.stderr)
         if proc.returncode != 0:
             failures.append(f"resumed sweep.py exited {proc.returncode}")
-        if proc.stdout.count("skipped (completed)") != 3 or "strip_10000: unfinished: restart from" not in proc.stdout:
+        if proc.stdout.count("skipped (completed)") != 3 or "strip_20000: unfinished: restart from" not in proc.stdout:
             failures.append("the resumed sweep did not announce 3 skipped runs and a restart of the unfinished one")
         if stamp(runs[:2] + runs[3:]) != stamps:
             failures.append("a completed run was written again on resuming")
