@@ -100,3 +100,36 @@ TEST_CASE("the substrate's tangent is the derivative of its forces, stuck and sl
     CHECK(after[2 * i + 1] == Approx(before[2 * i + 1]).margin(1e-12 * cap));
   }
 }
+
+TEST_CASE("the substrate books what a node pulled along a line past its cap does: the traction's energy stored "
+          "and the cap times the slide dissipated", "[substrate]") {
+  // One node of the strip, its traction first set to zero, pulled in 400 steps along a fixed
+  // direction to 4 times the stretch at which its traction reaches the cap, the slide
+  // committed after each step. The stored energy grows by cap^2 / (2 k), the slides' work by
+  // cap (d - cap / k), and their sum is the work the pull does, the trapezoid of the
+  // substrate's force over each step: exact on each step but the one that passes the cap (its
+  // error at most k du^2 / 8, 2e-6 of the total). The other nodes, at rest, add nothing.
+  State s = strip_on_substrate(50.0);
+  const std::size_t i = s.nodes.size() / 2;
+  const double k = s.substrate.stiffness[i], cap = s.substrate.cap[i];
+  s.substrate.slide_x[i] = s.nodes.x[i] - s.nodes.x0[i];
+  s.substrate.slide_y[i] = s.nodes.y[i] - s.nodes.y0[i];
+  commit_substrate_slide(s.nodes, s.ownership, s.substrate);
+  const double stored0 = substrate_elastic_energy(s.nodes, s.substrate), slid0 = s.substrate.slide_work_J;
+  const double reach = 4.0 * cap / k, dx = 0.6 * reach / 400.0, dy = 0.8 * reach / 400.0;
+  std::vector<double> before = substrate_forces(s);
+  double work = 0.0;
+  for (int step = 0; step < 400; ++step) {
+    s.nodes.x[i] += dx, s.nodes.y[i] += dy;
+    const std::vector<double> after = substrate_forces(s);
+    work -= 0.5 * ((before[2 * i] + after[2 * i]) * dx + (before[2 * i + 1] + after[2 * i + 1]) * dy);
+    commit_substrate_slide(s.nodes, s.ownership, s.substrate);
+    before = substrate_forces(s);
+  }
+  const double stored = substrate_elastic_energy(s.nodes, s.substrate) - stored0;
+  const double slid = s.substrate.slide_work_J - slid0;
+  INFO("stored " << stored << ", slid " << slid << ", work " << work);
+  CHECK(std::fabs(stored - cap * cap / (2.0 * k)) <= 1e-9 * stored);
+  CHECK(std::fabs(slid - cap * (reach - cap / k)) <= 1e-9 * slid);
+  CHECK(std::fabs(stored + slid - work) <= 1e-5 * work);
+}

@@ -55,8 +55,9 @@ Snapshot state_snapshot(const ydry::State& s) {
   ydry::for_each_history_field(s, take);
   ydry::for_each_topology_field(s, take);
   const ydry::Energies e = ydry::energies(s);
-  snapshot["energies"] = {e.kinetic_J, e.elastic_J, e.joint_work_J, e.fracture_J, e.contact_work_J,
-                          e.external_work_J, e.gravity_work_J};
+  snapshot["energies"] = {e.kinetic_J,        e.elastic_J,           e.joint_work_J,
+                          e.fracture_J,       e.contact_work_J,      e.substrate_elastic_J,
+                          e.substrate_slide_work_J, e.external_work_J, e.gravity_work_J};
   return snapshot;
 }
 

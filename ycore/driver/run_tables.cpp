@@ -62,6 +62,8 @@ std::vector<double> series_row(const State& s, const Deck& deck, const std::vect
   v.joint_work_J = e.joint_work_J;
   v.fracture_energy_J = e.fracture_J;
   v.contact_work_J = e.contact_work_J;
+  v.substrate_energy_J = e.substrate_elastic_J;
+  v.substrate_slide_work_J = e.substrate_slide_work_J;
   v.external_work_J = e.external_work_J;
   v.gravity_work_J = e.gravity_work_J;
   v.mechanical_steps = double(s.mechanics.steps);

@@ -40,6 +40,8 @@ const std::vector<SeriesColumn> kSeriesColumns = {
     {"joint_work_J", &SeriesValues::joint_work_J},
     {"fracture_energy_J", &SeriesValues::fracture_energy_J},
     {"contact_work_J", &SeriesValues::contact_work_J},
+    {"substrate_energy_J", &SeriesValues::substrate_energy_J},
+    {"substrate_slide_work_J", &SeriesValues::substrate_slide_work_J},
     {"external_work_J", &SeriesValues::external_work_J},
     {"gravity_work_J", &SeriesValues::gravity_work_J},
     {"mechanical_steps", &SeriesValues::mechanical_steps}};

@@ -43,7 +43,7 @@ struct SeriesValues {
   double surface_crack_count = kNaN, mean_surface_crack_width_m = kNaN, total_surface_crack_width_m = kNaN;
   double right_end_displacement_m = kNaN, kinetic_energy_J = kNaN, relaxation_residual = kNaN, broken_joints = kNaN;
   double elastic_energy_J = kNaN, joint_work_J = kNaN, fracture_energy_J = kNaN, contact_work_J = kNaN,
-         external_work_J = kNaN, gravity_work_J = kNaN;
+         substrate_energy_J = kNaN, substrate_slide_work_J = kNaN, external_work_J = kNaN, gravity_work_J = kNaN;
   double mechanical_steps = kNaN;
 };
 

@@ -1,6 +1,7 @@
 #include "ycore/solid/energies.h"
 
 #include "ycore/solid/corotational.h"
+#include "ycore/solid/substrate.h"
 #include "ycore/state/blocked_sum.h"
 
 namespace ydry {
@@ -30,6 +31,8 @@ Energies energies(const State& s) {
     if (s.joints.broken[j]) e.fracture_J += s.joints.work[j];
   }
   e.contact_work_J = s.contact.work_J;
+  e.substrate_elastic_J = substrate_elastic_energy(n, s.substrate);
+  e.substrate_slide_work_J = s.substrate.slide_work_J;
   for (const MechanicsBoundary& b : s.mechanics_boundaries) e.external_work_J += b.work_J;
   e.gravity_work_J = s.mechanics.gravity_work_J;
   return e;

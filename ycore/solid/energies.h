@@ -13,6 +13,8 @@ struct Energies {
   double fracture_J = 0;     // work done on the joints that broke (all of it dissipated)
   double contact_work_J = 0; // work done on the contacts: friction and the normal dashpot
                              // dissipate it, the penalty stores some of it
+  double substrate_elastic_J = 0;     // stored by the plan view's substrate tractions
+  double substrate_slide_work_J = 0;  // dissipated by its slides since t = 0
   double external_work_J = 0;  // through fixed and driven boundaries
   double gravity_work_J = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ycore/state/blocked_sum.h"
 #include "ycore/state/ownership.h"
 
 namespace ydry {
@@ -55,11 +56,23 @@ void add_substrate_forces(const Substrate& b, const Ownership& ownership, Nodes&
 
 void commit_substrate_slide(const Nodes& n, const Ownership& ownership, Substrate& b) {
   if (!b.present()) return;
-  for_each_owned(ownership.node_begin, n.size(), [&](std::size_t i) {
+  const auto work = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
     const Stretch e = stretch(n, b, i);
-    b.slide_x[i] += (1.0 - e.capped) * e.x;
-    b.slide_y[i] += (1.0 - e.capped) * e.y;
+    const double slide = 1.0 - e.capped;
+    b.slide_x[i] += slide * e.x;
+    b.slide_y[i] += slide * e.y;
+    sum[0] += b.cap[i] * slide * std::sqrt(e.x * e.x + e.y * e.y);
+  }, ownership.node_begin);
+  b.slide_work_J += work[0];
+}
+
+double substrate_elastic_energy(const Nodes& n, const Substrate& b) {
+  if (!b.present()) return 0.0;
+  const auto energy = blocked_sum<1>(n.size(), [&](std::size_t i, std::array<double, 1>& sum) {
+    const Stretch e = stretch(n, b, i);
+    sum[0] += 0.5 * b.stiffness[i] * e.capped * e.capped * (e.x * e.x + e.y * e.y);
   });
+  return energy[0];
 }
 
 Eigen::SparseMatrix<double> substrate_tangent(const Nodes& n, const Substrate& b, const FreeComponents& free) {

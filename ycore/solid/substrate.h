@@ -25,8 +25,13 @@ void init_substrate(const Deck& deck, const Triangles& triangles, const std::vec
 void add_substrate_forces(const Substrate& substrate, const Ownership& ownership, Nodes& nodes);
 
 // Slides every node whose traction passes its cap back to the cap: the end of a quasi-static
-// relaxation, or every step of a dynamic run.
+// relaxation, or every step of a dynamic run. Books the work each slide dissipates, the cap
+// times the slide's length, in substrate.slide_work_J (exact where a node slides along a line).
 void commit_substrate_slide(const Nodes& nodes, const Ownership& ownership, Substrate& substrate);
+
+// The elastic energy the substrate's tractions store at the nodes' positions: 1/2 k |e|^2 with
+// the stretch e capped at cap / k.
+double substrate_elastic_energy(const Nodes& nodes, const Substrate& substrate);
 
 // -d(substrate forces)/d(coordinates) over the free components: k I where the traction is within
 // its cap, (cap / |e|)(I - e e^T / |e|^2) where it slides.

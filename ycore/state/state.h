@@ -290,6 +290,8 @@ struct Substrate {
   // history, [nodes]: where the node's traction is zero, from its initial position: the slide
   // committed at the last equilibrium (as the contact's friction slip)
   std::vector<double> slide_x, slide_y;
+  // total
+  double slide_work_J = 0;  // work the slides committed since t = 0 dissipated: cap times slide
   bool present() const { return !stiffness.empty(); }
 };
 

@@ -60,6 +60,7 @@ void for_each_history_field(S& s, Field&& field) {
   if (s.substrate.present()) {  // a plan view's (its deck, and so the checkpoint's)
     field("substrate.slide_x", s.substrate.slide_x);
     field("substrate.slide_y", s.substrate.slide_y);
+    field("substrate.slide_work_J", s.substrate.slide_work_J);
   }
   field("contact.pair_node", s.contact.pair_node);
   field("contact.pair_edge", s.contact.pair_edge);
