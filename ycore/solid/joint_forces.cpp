@@ -274,14 +274,14 @@ void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::v
   const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
-  // The law with its friction angle moved into the cohesion, at the compression held.
+  // Held, the law's friction angle moves into each point's cohesion, at the compression held.
   MaterialModel held_law = m;
   held_law.tan_friction = 0.0;
+  const MaterialModel& law = held_compression ? held_law : m;
   joint_forces_with(f, h0, mech.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
-    JointStrength held = strength;
-    if (held_compression) held.cohesion += held_compression[p] * m.tan_friction;
-    const PointTraction t = held_compression ? cohesive_traction(held_law, held, o, sl, jt.damage[3 * j + p])
-                                             : cohesive_traction(m, strength, o, sl, jt.damage[3 * j + p]);
+    JointStrength point = strength;
+    if (held_compression) point.cohesion += held_compression[p] * m.tan_friction;
+    const PointTraction t = cohesive_traction(law, point, o, sl, jt.damage[3 * j + p]);
     normal = t.normal, shear = t.shear;
     return 0.0;
   }, out);

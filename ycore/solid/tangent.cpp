@@ -75,11 +75,13 @@ Eigen::SparseMatrix<double> tangent_stiffness(const Nodes& n, const Triangles& t
   for (std::size_t j = 0; j < jt.size(); ++j) {
     if (jt.broken[j] || !materials[jt.law[j]].mechanical) continue;
     const index_t* node = &jt.node[4 * j];
-    const double x0[4] = {n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]]};
-    const double y0[4] = {n.y[node[0]], n.y[node[1]], n.y[node[2]], n.y[node[3]]};
     double compression[3];
     const bool held = friction == JointFrictionTangent::held;
-    if (held) joint_point_compressions(jt, materials, j, x0, y0, compression);
+    if (held) {
+      const double x0[4] = {n.x[node[0]], n.x[node[1]], n.x[node[2]], n.x[node[3]]};
+      const double y0[4] = {n.y[node[0]], n.y[node[1]], n.y[node[2]], n.y[node[3]]};
+      joint_point_compressions(jt, materials, j, x0, y0, compression);
+    }
     add_part_tangent<4>(node, n, free, kRelativeStep * jt.length0[j], [&](const double* x, const double* y, double* f) {
       joint_nodal_forces_at(jt, mech, materials, j, x, y, f, held ? compression : nullptr);
     }, entries);
