@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "ycore/solid/joint_law.h"
 #include "ycore/solid/vector_clones.h"
@@ -274,10 +275,11 @@ void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::v
   const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
   const double h0 = jt.length0[j];
   const JointStrength strength = joint_strength(m, jt.strength_factor[j], h0);
-  // Held, the law's friction angle moves into each point's cohesion, at the compression held.
-  MaterialModel held_law = m;
-  held_law.tan_friction = 0.0;
-  const MaterialModel& law = held_compression ? held_law : m;
+  // Held, the law's friction angle moves into each point's cohesion, at the compression held
+  // (the copy only then: the force kernel's scalar pass comes here too).
+  std::optional<MaterialModel> held_law;
+  if (held_compression) held_law.emplace(m).tan_friction = 0.0;
+  const MaterialModel& law = held_law ? *held_law : m;
   joint_forces_with(f, h0, mech.thickness_m, [&](int p, double o, double sl, double& normal, double& shear) {
     JointStrength point = strength;
     if (held_compression) point.cohesion += held_compression[p] * m.tan_friction;

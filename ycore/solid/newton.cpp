@@ -193,16 +193,16 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   double mu = kMinMu;
   out.converged = balanced(out.measures) || chord_steps(s, free, balanced, out);
   const std::int64_t cap = std::min<std::int64_t>(kMaxEvaluations, controls.max_steps) + out.iterations;
-  JointFrictionTangent friction = JointFrictionTangent::held;
+  JointFrictionTangent joint_friction = JointFrictionTangent::held;
   while (!(out.converged = balanced(out.measures)) && out.iterations < cap && mu <= kMaxMu) {
-    if (friction == JointFrictionTangent::held && mu >= kDerivedFrictionMu) {
-      friction = JointFrictionTangent::derived;
+    if (joint_friction == JointFrictionTangent::held && mu >= kDerivedFrictionMu) {
+      joint_friction = JointFrictionTangent::derived;
       mu = kMinMu;
     }
     // The force passes of the line search book their own stages; the rest is "solve".
     StageClock model_clock;
     const Eigen::SparseMatrix<double> K_solid =
-        tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free, friction) +
+        tangent_stiffness(n, s.triangles, s.joints, s.mechanics, s.materials, free, joint_friction) +
         substrate_tangent(n, s.substrate, free);
     metric.scale = K_solid.diagonal().sum() / metric.mass.sum();
     const Eigen::VectorXd f = out_of_balance(free, n);

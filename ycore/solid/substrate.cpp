@@ -61,7 +61,7 @@ void commit_substrate_slide(const Nodes& n, const Ownership& ownership, Substrat
     const double slide = 1.0 - e.capped;
     b.slide_x[i] += slide * e.x;
     b.slide_y[i] += slide * e.y;
-    sum[0] += b.cap[i] * slide * std::sqrt(e.x * e.x + e.y * e.y);
+    if (slide > 0.0) sum[0] += b.cap[i] * slide * std::sqrt(e.x * e.x + e.y * e.y);
   }, ownership.node_begin);
   b.slide_work_J += work[0];
 }
