@@ -117,12 +117,17 @@ void model_link_forces(const std::vector<ContactLink>& links, const std::vector<
 }
 
 std::size_t update_active_links(const std::vector<ContactLink>& links, const Eigen::VectorXd& du,
-                                const std::vector<index_t>& unknown, bool may_open, std::vector<std::uint8_t>& active) {
+                                const std::vector<index_t>& unknown, std::vector<std::uint8_t>& changes,
+                                std::vector<std::uint8_t>& active) {
+  constexpr std::uint8_t kHeldAfter = 2;  // changes
   std::size_t changed = 0;
   for (std::size_t k = 0; k < links.size(); ++k) {
-    const std::uint8_t closes = (active[k] && !may_open) || links[k].gap + along(links[k], links[k].ty, -links[k].tx, du, unknown) < 0.0;
-    changed += closes != active[k];
-    active[k] = closes;
+    if (changes[k] >= kHeldAfter) continue;
+    const std::uint8_t closes = links[k].gap + along(links[k], links[k].ty, -links[k].tx, du, unknown) < 0.0;
+    if (closes == active[k]) continue;
+    const std::uint8_t next = ++changes[k] >= kHeldAfter ? std::uint8_t(links[k].pressing) : closes;
+    changed += next != active[k];
+    active[k] = next;
   }
   return changed;
 }

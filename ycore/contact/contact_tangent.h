@@ -55,9 +55,13 @@ void add_link_stiffness(const std::vector<ContactLink>& links, const std::vector
 void model_link_forces(const std::vector<ContactLink>& links, const std::vector<std::uint8_t>& active,
                        const std::vector<index_t>& unknown, Eigen::VectorXd& rhs);
 
-// Sets each link active where the step du closes its gap (and, unless `may_open`, keeps the
-// active ones so); returns how many changed.
+// Sets each link active where the step du closes its gap, and counts in `changes` how often
+// each link's state has changed over a step's rounds. A link whose state changes a second time
+// alternates (a penalty's model is no M-matrix, and a corner that rests on its edge with next
+// to no force closes in one round's model and opens in the next's): it is held from then on as
+// the force kernel has it, active where it presses. Returns how many links changed.
 std::size_t update_active_links(const std::vector<ContactLink>& links, const Eigen::VectorXd& du,
-                                const std::vector<index_t>& unknown, bool may_open, std::vector<std::uint8_t>& active);
+                                const std::vector<index_t>& unknown, std::vector<std::uint8_t>& changes,
+                                std::vector<std::uint8_t>& active);
 
 }  // namespace ydry

@@ -23,11 +23,9 @@ constexpr std::int64_t kMaxEvaluations = 100;
 // Cuts of a step along its direction before mu is raised: each to the minimum of the quadratic
 // through the slopes at its ends, kept within [0.1, 0.5] of the step.
 constexpr int kMaxCuts = 4;
-// Solves of the model a step, at most, to settle its active contacts.
+// Solves of the model a step, at most, to settle its active contacts (a link that alternates is
+// held after its second change: update_active_links).
 constexpr int kMaxActiveSetRounds = 8;
-// Rounds in which a link may open as well as close; after them links only close, so that a set
-// that alternates (it can, a penalty's model being no M-matrix) settles.
-constexpr int kOpeningRounds = 3;
 // A relaxation's tangent holds the joints' mode II strength at each step's compression
 // (JointFrictionTangent::held) until a step needs mu of this much or more; from the next step on
 // it takes the strength's rise as derived (doc/solver.md "The joints' friction in the tangent").
@@ -92,6 +90,7 @@ Eigen::VectorXd model_step(const Eigen::SparseMatrix<double>& K_solid, const std
                            std::vector<std::uint8_t>& active, StiffnessSolver& solver, Eigen::SparseMatrix<double>& A,
                            NewtonOutcome& out) {
   Eigen::VectorXd du;
+  std::vector<std::uint8_t> changes(links.size(), 0);
   for (int round = 0; round < kMaxActiveSetRounds; ++round) {
     A = model_tangent(K_solid, links, active, free);
     A.diagonal() += mu * metric.scale * metric.mass;
@@ -101,7 +100,7 @@ Eigen::VectorXd model_step(const Eigen::SparseMatrix<double>& K_solid, const std
     Eigen::VectorXd rhs = f;
     model_link_forces(links, active, free.unknown, rhs);
     du = solver.solve(rhs);
-    if (update_active_links(links, du, free.unknown, round < kOpeningRounds, active) == 0) break;
+    if (update_active_links(links, du, free.unknown, changes, active) == 0) break;
   }
   return du;
 }
