@@ -170,8 +170,7 @@ bool chord_steps(State& s, const FreeComponents& free, const std::function<bool(
 
 }  // namespace
 
-NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, const ForceMeasures& start,
-                                 const std::vector<double>& joint_work) {
+NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, const std::vector<double>& joint_work) {
   Nodes& n = s.nodes;
   const FreeComponents free = free_components(n, s.triangles, s.materials);
   Metric metric;
@@ -180,7 +179,12 @@ NewtonOutcome newton_equilibrium(State& s, const RelaxationControls& controls, c
   s.contact.damping_ratio = 0.0;  // the dashpot would read the steps as velocities
   const FillOrdering ordering = fill_ordering(s.triangles, s.joints, s.materials, free, s.mechanics);
   NewtonOutcome out;
-  out.measures = start;
+  // The relaxation's first evaluation saw the predicted jump as a velocity over one pseudo-step,
+  // and the contact's dashpot pushed against it: a force that no state at rest has, which the
+  // model's links leave out (they push with the penalty alone), so that near the tolerance every
+  // step looked uphill and the relaxation went to FIRE (doc/solver.md). The forces at rest:
+  std::vector<double> contact_before;
+  out.measures = forces_after_move(s, 0.0, contact_before);
   const auto balanced = [&](const ForceMeasures& m) {
     return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
   };

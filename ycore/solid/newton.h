@@ -25,7 +25,7 @@ struct NewtonOutcome {
   ForceMeasures measures;           // of the state reached
 };
 
-// From the current positions, at rest, whose forces `start` measured, to equilibrium by Newton
+// From the current positions, at rest, to equilibrium by Newton
 // iterations on the out-of-balance force: (K + K_c + mu M) du = f with K the tangent of the
 // element and joint forces (tangent.h), K_c the penalty of the contact links the step closes
 // (contact_tangent.h: an active set found by solving again) and M the nodes' masses. Each step
@@ -38,8 +38,9 @@ struct NewtonOutcome {
 // along the straight path from mechanics.x_start, y_start to the state reached. It writes the
 // positions, the forces, the contact's pairs, slips and work, and the joints' work. Stops
 // unconverged after 100 force evaluations (or controls.max_steps) or when mu grows beyond any
-// use; the caller then relaxes on from the state reached.
-NewtonOutcome newton_equilibrium(State& state, const RelaxationControls& controls, const ForceMeasures& start,
-                                 const std::vector<double>& joint_work);
+// use; the caller then relaxes on from the state reached. It starts from the forces of the
+// positions as they are at rest: the relaxation's first evaluation saw the predicted jump as a
+// velocity, and the contact's dashpot with it.
+NewtonOutcome newton_equilibrium(State& state, const RelaxationControls& controls, const std::vector<double>& joint_work);
 
 }  // namespace ydry

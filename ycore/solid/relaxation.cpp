@@ -233,7 +233,7 @@ RelaxationResult relax(State& s, const RelaxationControls& controls, double coup
   };
   result.residual = measures.ratio();
   if (controls.method == RelaxationMethod::newton) {
-    const NewtonOutcome newton = newton_equilibrium(s, controls, measures, joint_work);
+    const NewtonOutcome newton = newton_equilibrium(s, controls, joint_work);
     result.steps += newton.iterations;
     measures = newton.measures;
     result.residual = measures.ratio();
