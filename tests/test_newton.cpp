@@ -7,9 +7,12 @@
 #include <Eigen/Dense>
 
 #include "tests/test_support.h"
+#include "ycore/contact/contact_tangent.h"
 #include "ycore/driver/coupling.h"
 #include "ycore/driver/setup.h"
 #include "ycore/solid/joint_law.h"
+#include "ycore/solid/newton.h"
+#include "ycore/solid/relaxation.h"
 #include "ycore/solid/solid_forces.h"
 #include "ycore/solid/stiffness_model.h"
 #include "ycore/solid/tangent.h"
@@ -256,4 +259,59 @@ TEST_CASE("the factorisations order by whichever of AMD and METIS fills the mesh
     difference = std::max(difference, std::hypot(a.x[i] - results[1].nodes.x[i], a.y[i] - results[1].nodes.y[i]));
   }
   CHECK(difference <= 1e-8 * largest);
+}
+
+TEST_CASE("a contact link whose state alternates in the active set's rounds is held as the force kernel has it",
+          "[newton]") {
+  // A corner (node 0) over the middle of an edge from node 1 to node 2 along x, whose outward
+  // normal is -y: a step that moves the corner up by more than its gap closes the link.
+  ContactLink link{};
+  link.receivers[0] = 0, link.receivers[1] = 1, link.receivers[2] = 2;
+  link.share[0] = 1.0, link.share[1] = -0.5, link.share[2] = -0.5;
+  link.tx = 1.0, link.ty = 0.0, link.stiffness = 1e6, link.length = 1e-3;
+  const std::vector<index_t> unknown = {0, 1, 2, 3, 4, 5};
+  Eigen::VectorXd closing = Eigen::VectorXd::Zero(6), opening = Eigen::VectorXd::Zero(6);
+  closing[1] = 1e-9, opening[1] = -1e-9;
+  // The rounds' steps close, open and close again the link of a corner 1e-10 m outside its edge
+  // (no force: it rests on it), then open, close and open that of a corner pressing 1e-10 m.
+  for (const bool pressing : {false, true}) {
+    INFO("pressing " << pressing);
+    link.gap = pressing ? -1e-10 : 1e-10, link.pressing = pressing;
+    const std::vector<ContactLink> links = {link};
+    std::vector<std::uint8_t> active = {std::uint8_t(pressing)}, changes = {0};
+    const Eigen::VectorXd& first = pressing ? opening : closing;
+    const Eigen::VectorXd& second = pressing ? closing : opening;
+    CHECK(update_active_links(links, first, unknown, changes, active) == 1);  // the step's choice
+    CHECK(active[0] == std::uint8_t(!pressing));
+    CHECK(update_active_links(links, second, unknown, changes, active) == 1);  // a second change: held
+    CHECK(active[0] == std::uint8_t(pressing));
+    CHECK(update_active_links(links, first, unknown, changes, active) == 0);  // held as it presses
+    CHECK(active[0] == std::uint8_t(pressing));
+  }
+}
+
+TEST_CASE("Newton judges the state at rest: the dashpot's push against a predicted jump does not unbalance a "
+          "balanced block", "[newton]") {
+  // The block of verification/contact_rest, balanced on its base by the initial equilibrium.
+  const Deck deck = load_deck(YDRY_SOURCE_DIR "/verification/contact_rest/contact_rest.toml", {});
+  State s = setup_state(deck);
+  const RelaxationControls controls{deck.relaxation_tolerance, deck.relaxation_max_steps, RelaxationMethod::newton,
+                                    deck.relaxation_slide_after, nullptr};
+  // Balanced as Newton and the relaxations judge it: to the tolerance, or to the round-off floor.
+  const auto balanced = [&](const ForceMeasures& m) {
+    return m.net2 <= s.mechanics.roundoff_net2 || m.ratio() <= controls.tolerance;
+  };
+  REQUIRE(balanced(compute_forces(s)));
+  // A relaxation's first evaluation sees the predicted jump as a velocity: the block falling at
+  // 1 mm/s onto its base, which the contact's dashpot resists.
+  const FreeComponents free = free_components(s.nodes, s.triangles, s.materials);
+  for (const index_t c : free.component)
+    if (c % 2 == 1) s.nodes.vy[std::size_t(c / 2)] = -1e-3;
+  const ForceMeasures pushed = compute_forces(s);
+  REQUIRE(pushed.net2 > 100.0 * s.mechanics.roundoff_net2);
+  REQUIRE(pushed.ratio() > 100.0 * controls.tolerance);
+  std::fill(s.nodes.vy.begin(), s.nodes.vy.end(), 0.0);  // relax() starts Newton at rest
+  const NewtonOutcome outcome = newton_equilibrium(s, controls, s.joints.work);
+  CHECK(outcome.converged);
+  CHECK(outcome.iterations == 0);
 }
