@@ -292,11 +292,11 @@ void joint_nodal_forces_at(const Joints& jt, const Mechanics& mech, const std::v
 void joint_point_compressions(const Joints& jt, const std::vector<MaterialModel>& materials, std::size_t j,
                               const double x[4], const double y[4], double compression[3]) {
   const JointFrame f = joint_frame(x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3]);
-  const double k = materials[jt.law[j]].penalty / jt.length0[j];  // joint_strength's slope
+  const double k = joint_strength(materials[jt.law[j]], jt.strength_factor[j], jt.length0[j]).k;
   for (int p = 0; p < 3; ++p) {
     double o, s;
     point_opening_slip(f, p, o, s);
-    compression[p] = o < 0.0 ? -k * o : 0.0;  // cohesive_traction's
+    compression[p] = point_compression(k, o);
   }
 }
 

@@ -83,6 +83,10 @@ inline JointStrength joint_strength(const MaterialModel& m, double strength_fact
   return j;
 }
 
+// The compression (Pa) of a point with normal opening o on a joint of slope k (JointStrength):
+// the linear penalty k o where the faces overlap, 0 where they are open.
+inline double point_compression(double k, double o) { return o < 0.0 ? -k * o : 0.0; }
+
 // Traction at a joint point with normal opening o and slip s (m), given the point's
 // committed damage. Pre-peak up to o_p, then z(D) f_t with
 // D = sqrt(((o - o_p)/o_t)^2 + ((|s| - s_p)/s_t)^2) (Fig. 2c), the softening lengths chosen so
@@ -96,7 +100,7 @@ inline PointTraction cohesive_traction(const MaterialModel& m, const JointStreng
 
   PointTraction t;
   const double ft = j.tensile, op = j.peak_opening;
-  const double compression = o < 0.0 ? -k * o : 0.0;
+  const double compression = point_compression(k, o);
   const double fs = j.cohesion + compression * m.tan_friction;  // Fig. 2b
   const double abs_s = std::fabs(s);
   // Softening lengths only past a peak: most joints, most of the time, are before both.
@@ -122,7 +126,7 @@ struct PrePeakTraction {
   double past_peak;      // 1 past a peak, else 0 (a double, so that the kernel vectorises)
 };
 inline PrePeakTraction pre_peak_traction(const JointStrength& j, double tan_friction, double o, double s) {
-  const double compression = o < 0.0 ? -j.k * o : 0.0;
+  const double compression = point_compression(j.k, o);
   const double fs = j.cohesion + compression * tan_friction;  // Fig. 2b
   const double sp = 2.0 * fs / j.k, abs_s = std::fabs(s);
   PrePeakTraction t;
@@ -149,7 +153,7 @@ inline SoftenedTraction softened_traction(const JointStrength& j, const Softenin
   using joint_law_detail::hardening;
   using joint_law_detail::softening_length;
   const double k = j.k, ft = j.tensile, op = j.peak_opening;
-  const double compression = o < 0.0 ? -k * o : 0.0;
+  const double compression = point_compression(k, o);
   const double fs = j.cohesion + compression * m.tan_friction;  // Fig. 2b
   const double abs_s = std::fabs(s);
   // Both branches of every choice are computed (a select, no jump; the dropped one may be
